@@ -1,0 +1,52 @@
+// volmesh convert <in> <out>: between mesh formats, or between surface formats.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "commands.hpp"
+#include "mesh_input.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/validity.hpp"
+#include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/surface_io.hpp"
+
+namespace volmesh::cli {
+
+namespace {
+
+struct ConvertOptions {
+  std::string input, output;
+};
+
+int run_convert(const ConvertOptions& opt) {
+  require_known_format(opt.input);
+  if (is_surface_file(opt.input)) {
+    if (!is_surface_file(opt.output))
+      throw InputError(opt.output + ": a surface converts to .stl .off .obj or .ply");
+    write_surface(read_surface(opt.input), opt.output);
+    return 0;
+  }
+  const PolyMesh mesh = read_mesh(opt.input);
+  // Never pass a broken mesh on to another tool under a new name.
+  const ValidityReport r = check_validity(mesh);
+  if (!r.valid())
+    throw InputError(opt.input + ": invalid mesh, not converted (" +
+                     (r.problems.empty() ? std::string("see volmesh check") : r.problems.front()) +
+                     ")");
+  write_mesh(mesh, opt.output);
+  std::cerr << "wrote " << opt.output << ": " << mesh.num_cells() << " cells, "
+            << mesh.num_points() << " points\n";
+  return 0;
+}
+
+}  // namespace
+
+Command add_convert_command(CLI::App& root) {
+  auto opt = std::make_shared<ConvertOptions>();
+  CLI::App* app = root.add_subcommand(
+      "convert", "Convert a mesh (.vtu .msh → .vtu .msh .mesh .inp DIR.foam) or a surface");
+  app->add_option("input", opt->input, "input mesh or surface")->required();
+  app->add_option("output", opt->output, "output file (format from the extension)")->required();
+  return {app, [opt] { return run_convert(*opt); }};
+}
+
+}  // namespace volmesh::cli

@@ -1,0 +1,47 @@
+// volmesh: one binary, subcommands (DESIGN.md §3). Exit codes: 0 success, 2 bad usage,
+// 1 bad input or failure with one line on stderr.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <new>
+#include <vector>
+
+#include "commands.hpp"
+#include "volmesh/core/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace volmesh;
+  CLI::App app{"volmesh — octree cut-cell, hex and tet meshing, checking and export"};
+  app.set_version_flag("--version", std::string("volmesh ") + VOLMESH_VERSION);
+  app.require_subcommand(1);
+  app.footer(R"(Examples:
+  volmesh info elephant.off                 counts, bounding box, closedness, volume
+  volmesh check mesh.vtu --surface part.stl validity, quality, distance to the surface
+  volmesh check mesh.vtu --json             the same as one JSON object on stdout
+  volmesh convert mesh.msh case.foam        Gmsh 4.1 to an OpenFOAM case directory
+  volmesh convert part.stl part.off         surfaces convert too)");
+
+  std::vector<cli::Command> commands{cli::add_info_command(app), cli::add_convert_command(app),
+                                     cli::add_check_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  try {
+    for (auto& c : commands)
+      if (c.app->parsed()) return c.run();
+  } catch (const InputError& e) {
+    std::cerr << "volmesh: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "volmesh: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "volmesh: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 2;
+}

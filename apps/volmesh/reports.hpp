@@ -1,0 +1,19 @@
+#pragma once
+// Reports shared by `info` and `check`: JSON objects for --json and readable text.
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "mesh_input.hpp"
+#include "volmesh/core/validity.hpp"
+#include "volmesh/io/surface_check.hpp"
+
+namespace volmesh::cli {
+
+nlohmann::json to_json(const ValidityReport& r);
+nlohmann::json to_json(const SurfaceReport& r);
+nlohmann::json to_json(const Box& b);
+
+void print_validity(std::ostream& os, const ValidityReport& r);
+void print_surface(std::ostream& os, const SurfaceReport& r);
+
+}  // namespace volmesh::cli

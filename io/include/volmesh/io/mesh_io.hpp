@@ -1,0 +1,49 @@
+#pragma once
+// Volume mesh readers and writers. Every writer writes to a temporary name in the target's
+// directory and renames it at the end, so a failed run never leaves a partial file.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "volmesh/core/poly_mesh.hpp"
+
+namespace volmesh {
+
+// An extra cell or point array written beside the mesh (VTU only).
+struct Field {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;  // size = entities * components
+};
+struct IntField {
+  std::string name;
+  std::vector<Index> values;
+};
+struct MeshFields {
+  std::vector<IntField> cell_ints;  // e.g. "partition"; "region" is always written
+  std::vector<Field> cell;          // e.g. quality metrics, errors
+  std::vector<Field> point;         // e.g. "u", "displacement"
+};
+
+// Writes by extension: .vtu, .msh (Gmsh 4.1), .mesh (MEDIT), .inp (Abaqus), or a directory
+// ending in .foam (OpenFOAM case with constant/polyMesh). Element formats (msh, mesh, inp)
+// take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell.
+void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
+                const MeshFields& fields = {});
+// Reads by extension: .vtu, .msh.
+PolyMesh read_mesh(const std::filesystem::path& path);
+
+bool is_mesh_file(const std::filesystem::path& path);
+
+void write_vtu(const PolyMesh& mesh, const std::filesystem::path& path,
+               const MeshFields& fields = {});
+PolyMesh read_vtu(const std::filesystem::path& path);
+
+void write_msh(const PolyMesh& mesh, const std::filesystem::path& path);
+PolyMesh read_msh(const std::filesystem::path& path);
+
+void write_medit(const PolyMesh& mesh, const std::filesystem::path& path);
+void write_abaqus(const PolyMesh& mesh, const std::filesystem::path& path);
+void write_foam(const PolyMesh& mesh, const std::filesystem::path& case_dir);
+
+}  // namespace volmesh

@@ -1,0 +1,27 @@
+#pragma once
+// Reading and writing triangulated surfaces: STL (ascii and binary), OFF, OBJ, PLY.
+// Readers throw InputError with one line naming the file and what is wrong; they check
+// syntax and indices only. Geometric and topological checks are in surface_check.hpp.
+#include <filesystem>
+
+#include "volmesh/core/tri_surface.hpp"
+
+namespace volmesh {
+
+// Chooses the format from the extension (.stl .off .obj .ply, case-insensitive).
+TriSurface read_surface(const std::filesystem::path& path);
+void write_surface(const TriSurface& surface, const std::filesystem::path& path);
+
+bool is_surface_file(const std::filesystem::path& path);
+
+TriSurface read_stl(const std::filesystem::path& path);  // STL merges coincident vertices
+TriSurface read_off(const std::filesystem::path& path);
+TriSurface read_obj(const std::filesystem::path& path);
+TriSurface read_ply(const std::filesystem::path& path);
+
+void write_stl(const TriSurface& surface, const std::filesystem::path& path);  // binary
+void write_off(const TriSurface& surface, const std::filesystem::path& path);
+void write_obj(const TriSurface& surface, const std::filesystem::path& path);
+void write_ply(const TriSurface& surface, const std::filesystem::path& path);  // binary LE
+
+}  // namespace volmesh

@@ -1,0 +1,48 @@
+#include "volmesh/io/mesh_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "volmesh/core/errors.hpp"
+
+namespace volmesh {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  // "case.foam/" names a directory: look at the last non-empty component.
+  std::filesystem::path p = path;
+  if (p.filename().empty()) p = p.parent_path();
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool is_mesh_file(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".vtu" || ext == ".msh";
+}
+
+void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path, const MeshFields& fields) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".vtu") return write_vtu(mesh, path, fields);
+  if (ext == ".msh") return write_msh(mesh, path);
+  if (ext == ".mesh") return write_medit(mesh, path);
+  if (ext == ".inp") return write_abaqus(mesh, path);
+  if (ext == ".foam") return write_foam(mesh, path);
+  throw InputError(path.string() +
+                   ": unknown output format (use .vtu .msh .mesh .inp or a DIR.foam case)");
+}
+
+PolyMesh read_mesh(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path.string() + ": no such file");
+  const std::string ext = lower_extension(path);
+  if (ext == ".vtu") return read_vtu(path);
+  if (ext == ".msh") return read_msh(path);
+  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .msh)");
+}
+
+}  // namespace volmesh

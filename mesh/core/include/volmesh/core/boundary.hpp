@@ -1,0 +1,14 @@
+#pragma once
+// The boundary of a PolyMesh as a triangulated surface.
+#include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/core/tri_surface.hpp"
+
+namespace volmesh {
+
+// Boundary faces (neighbour == kNoIndex), oriented outward. Triangles are kept; larger
+// polygons are split into triangles around their vertex average, which is added as a point,
+// so that non-convex faces of cut cells are triangulated without flips. Points are shared
+// with the mesh (the same indices), extra centre points are appended.
+TriSurface boundary_surface(const PolyMesh& mesh);
+
+}  // namespace volmesh

@@ -1,0 +1,199 @@
+#include "volmesh/core/convert.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "face_matching.hpp"
+#include "volmesh/core/errors.hpp"
+
+namespace volmesh {
+
+namespace {
+
+template <int C, int F, std::size_t NF>
+PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
+                         const std::array<std::array<int, std::size_t{F}>, NF>& local_faces) {
+  using Key = std::array<Index, F>;
+  struct Entry {
+    Key key;
+    Index cell;
+    int local;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(mesh.cells.size() * NF);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (std::size_t l = 0; l < NF; ++l) {
+      std::array<Index, F> loop;
+      for (int k = 0; k < F; ++k) loop[k] = mesh.cells[c][local_faces[l][k]];
+      entries.push_back({sorted_key<F>(loop), c, static_cast<int>(l)});
+    }
+  // Sorting by key pairs up shared faces; the stable order keeps the lower cell first.
+  std::vector<std::size_t> order(entries.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return entries[a].key < entries[b].key; });
+
+  std::map<Key, Index> boundary_tag;
+  for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i)
+    boundary_tag[sorted_key<F>(mesh.boundary_faces[i])] = mesh.boundary_tag[i];
+
+  PolyMesh poly;
+  poly.points = mesh.points;
+  poly.cell_region = mesh.cell_region;
+  poly.tag_names = mesh.tag_names;
+  // neighbour_of[e] for the owning entry e of each face; -2 marks the non-owning entry.
+  std::vector<Index> neighbour_of(entries.size(), kNoIndex);
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && entries[order[j]].key == entries[order[i]].key) ++j;
+    if (j - i > 2) {
+      throw InputError("mesh: face shared by " + std::to_string(j - i) + " cells (cells " +
+                       std::to_string(entries[order[i]].cell) + ", " +
+                       std::to_string(entries[order[i + 1]].cell) + ", " +
+                       std::to_string(entries[order[i + 2]].cell) + ")");
+    }
+    if (j - i == 2) {
+      neighbour_of[order[i]] = entries[order[i + 1]].cell;
+      neighbour_of[order[i + 1]] = -2;
+    }
+    i = j;
+  }
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    if (neighbour_of[e] == -2) continue;
+    const Entry& en = entries[e];
+    std::array<Index, F> loop;
+    for (int k = 0; k < F; ++k) loop[k] = mesh.cells[en.cell][local_faces[en.local][k]];
+    Index tag = kNoIndex;
+    if (neighbour_of[e] == kNoIndex) {
+      auto it = boundary_tag.find(en.key);
+      tag = it != boundary_tag.end() ? it->second : poly.tag_index("boundary");
+    }
+    poly.add_face(loop, en.cell, neighbour_of[e], tag);
+  }
+  return poly;
+}
+
+// Local faces of cell c oriented outward, each as a vector of vertices.
+std::vector<std::vector<Index>> outward_faces(const PolyMesh& mesh, std::span<const Index> faces,
+                                              Index c) {
+  std::vector<std::vector<Index>> out;
+  out.reserve(faces.size());
+  for (Index f : faces) {
+    auto loop = mesh.face(f);
+    std::vector<Index> v(loop.begin(), loop.end());
+    if (mesh.owner[f] != c) std::reverse(v.begin(), v.end());
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+template <std::size_t NF, std::size_t F>
+bool faces_match(const std::vector<std::vector<Index>>& faces, const std::array<Index, 8>& corners,
+                 const std::array<std::array<int, F>, NF>& local_faces) {
+  std::vector<std::vector<Index>> expected, actual;
+  for (const auto& lf : local_faces) {
+    std::vector<Index> k;
+    for (int l : lf) k.push_back(corners[l]);
+    std::sort(k.begin(), k.end());
+    expected.push_back(std::move(k));
+  }
+  for (auto f : faces) {
+    std::sort(f.begin(), f.end());
+    actual.push_back(std::move(f));
+  }
+  std::sort(expected.begin(), expected.end());
+  std::sort(actual.begin(), actual.end());
+  return expected == actual;
+}
+
+template <class Mesh>
+Mesh poly_to_elements(const PolyMesh& mesh, CellShape shape, const char* name) {
+  constexpr int C = Mesh::kCellCorners;
+  constexpr int F = Mesh::kFaceCorners;
+  Mesh out;
+  out.points = mesh.points;
+  out.cell_region = mesh.cell_region;
+  out.tag_names = mesh.tag_names;
+  const CellFaces cf = build_cell_faces(mesh);
+  out.cells.resize(mesh.num_cells());
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const CellCorners cc = classify_cell(mesh, cf, c);
+    if (cc.shape != shape)
+      throw InputError("mesh: cell " + std::to_string(c) + " is not a " + name + " (" +
+                       std::to_string(cf.of(c).size()) + " faces)");
+    std::copy_n(cc.corners.begin(), C, out.cells[c].begin());
+  }
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    if (!mesh.is_boundary(f)) continue;
+    std::array<Index, F> loop;
+    std::copy_n(mesh.face(f).begin(), F, loop.begin());
+    out.boundary_faces.push_back(loop);
+    out.boundary_tag.push_back(mesh.face_tag[f]);
+  }
+  return out;
+}
+
+}  // namespace
+
+PolyMesh to_poly_mesh(const TetMesh& mesh) { return element_to_poly(mesh, kTetFaces); }
+PolyMesh to_poly_mesh(const HexMesh& mesh) { return element_to_poly(mesh, kHexFaces); }
+
+CellCorners classify_cell(const PolyMesh& mesh, const CellFaces& cell_faces, Index c) {
+  CellCorners result;
+  const auto faces = cell_faces.of(c);
+  std::size_t corner_sum = 0;
+  for (Index f : faces) corner_sum += mesh.face(f).size();
+  const bool tet_like = faces.size() == 4 && corner_sum == 12;
+  const bool hex_like = faces.size() == 6 && corner_sum == 24;
+  if (!tet_like && !hex_like) return result;
+  const auto loops = outward_faces(mesh, faces, c);
+  for (const auto& l : loops)
+    if (l.size() != (tet_like ? 3u : 4u)) return result;
+
+  if (tet_like) {
+    // Face 0 seen from outside is clockwise from the apex's side: reverse it for VTK.
+    const auto& base = loops[0];
+    Index apex = kNoIndex;
+    for (const auto& l : loops)
+      for (Index v : l)
+        if (std::find(base.begin(), base.end(), v) == base.end()) apex = v;
+    if (apex == kNoIndex) return result;
+    result.corners = {base[0], base[2], base[1], apex};
+    if (faces_match(loops, result.corners, kTetFaces)) result.shape = CellShape::Tetrahedron;
+    return result;
+  }
+  // Hex: bottom = face 0 reversed (its normal then points into the cell, towards the top);
+  // each bottom corner's top partner is the vertex joined to it by an edge off the bottom.
+  const auto& f0 = loops[0];
+  const std::array<Index, 4> bottom{f0[0], f0[3], f0[2], f0[1]};
+  std::array<Index, 8> corners{};
+  for (int i = 0; i < 4; ++i) {
+    corners[i] = bottom[i];
+    Index partner = kNoIndex;
+    for (const auto& l : loops)
+      for (std::size_t k = 0; k < 4; ++k) {
+        const Index a = l[k], b = l[(k + 1) % 4];
+        const Index other = a == bottom[i] ? b : (b == bottom[i] ? a : kNoIndex);
+        if (other == kNoIndex || std::find(bottom.begin(), bottom.end(), other) != bottom.end())
+          continue;
+        if (partner != kNoIndex && partner != other) return result;
+        partner = other;
+      }
+    if (partner == kNoIndex) return result;
+    corners[4 + i] = partner;
+  }
+  result.corners = corners;
+  if (faces_match(loops, corners, kHexFaces)) result.shape = CellShape::Hexahedron;
+  return result;
+}
+
+TetMesh to_tet_mesh(const PolyMesh& mesh) {
+  return poly_to_elements<TetMesh>(mesh, CellShape::Tetrahedron, "tetrahedron");
+}
+HexMesh to_hex_mesh(const PolyMesh& mesh) {
+  return poly_to_elements<HexMesh>(mesh, CellShape::Hexahedron, "hexahedron");
+}
+
+}  // namespace volmesh

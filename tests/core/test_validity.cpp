@@ -1,0 +1,105 @@
+#include <gtest/gtest.h>
+
+#include "../support/unit_cube_meshes.hpp"
+#include "volmesh/core/convert.hpp"
+#include "volmesh/core/geometry.hpp"
+#include "volmesh/core/structured.hpp"
+#include "volmesh/core/validity.hpp"
+
+namespace volmesh {
+namespace {
+
+TEST(Validity, HangingNodeMeshIsClosedAndConforming) {
+  const PolyMesh p = test::big_cube_next_to_four_small(true);
+  const ValidityReport r = check_validity(p);
+  EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
+  EXPECT_DOUBLE_EQ(r.total_volume, 1.5);
+  EXPECT_DOUBLE_EQ(r.region_volume.at(1), 1.0);
+  EXPECT_DOUBLE_EQ(r.region_volume.at(2), 0.5);
+  EXPECT_DOUBLE_EQ(r.min_cell_volume, 0.125);
+}
+
+TEST(Validity, FlippedTetIsReportedInverted) {
+  TetMesh t = test::unit_cube_5_tets();
+  std::swap(t.cells[0][1], t.cells[0][2]);
+  const ValidityReport r = check_validity(to_poly_mesh(t));
+  EXPECT_FALSE(r.valid());
+  EXPECT_GE(r.non_positive_cells, 1);
+}
+
+TEST(Validity, MissingVertexOnAnEdgeIsATJunction) {
+  PolyMesh p = test::big_cube_next_to_four_small();
+  // Drop the mid-edge vertex (1,0,0.5) from the big cube's y = 0 face: geometrically the
+  // same face, but the cell no longer closes edge by edge.
+  for (Index f = 0; f < p.num_faces(); ++f) {
+    auto loop = p.face(f);
+    if (loop.size() != 5 || p.owner[f] != 0) continue;
+    std::vector<Index> shorter;
+    for (Index v : loop)
+      if (!(p.points[v].x() == 1.0 && p.points[v].z() == 0.5 && p.points[v].y() == 0.0))
+        shorter.push_back(v);
+    if (shorter.size() == 4) {
+      PolyMesh q;
+      q.points = p.points;
+      q.cell_region = p.cell_region;
+      q.tag_names = p.tag_names;
+      for (Index g = 0; g < p.num_faces(); ++g) {
+        if (g == f)
+          q.add_face(shorter, p.owner[g], p.neighbour[g], p.face_tag[g]);
+        else
+          q.add_face(p.face(g), p.owner[g], p.neighbour[g], p.face_tag[g]);
+      }
+      const ValidityReport r = check_validity(q);
+      EXPECT_EQ(r.open_cells, 0);  // the area vectors still sum to zero
+      EXPECT_EQ(r.unmatched_cell_edges, 1);
+      EXPECT_GT(r.open_region_boundary_edges, 0);
+      EXPECT_FALSE(r.valid());
+      return;
+    }
+  }
+  FAIL() << "face not found";
+}
+
+TEST(Validity, MissingFaceMakesAnOpenCell) {
+  PolyMesh p = to_poly_mesh(test::unit_cube_hex());
+  PolyMesh q;
+  q.points = p.points;
+  q.cell_region = p.cell_region;
+  q.tag_names = p.tag_names;
+  for (Index f = 1; f < p.num_faces(); ++f) q.add_face(p.face(f), 0, kNoIndex, 0);
+  const ValidityReport r = check_validity(q);
+  EXPECT_EQ(r.open_cells, 1);
+  EXPECT_FALSE(r.valid());
+}
+
+TEST(Validity, BadIndicesAreReportedNotFollowed) {
+  PolyMesh p = to_poly_mesh(test::unit_cube_hex());
+  p.face_vertices[3] = 99;
+  const ValidityReport r = check_validity(p);
+  EXPECT_EQ(r.bad_indices, 1);
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_NE(r.problems[0].find("vertex 99 out of range"), std::string::npos);
+}
+
+TEST(Validity, DuplicateFaceIsReported) {
+  PolyMesh p = to_poly_mesh(test::unit_cube_hex());
+  p.add_face(p.face(0), 0, kNoIndex, 0);
+  EXPECT_EQ(check_validity(p).duplicate_faces, 1);
+}
+
+TEST(Geometry, CentroidsOfAnAsymmetricCell) {
+  // Hex [0,2]x[0,1]x[0,1]: volume 2, centroid (1, .5, .5); faces have centres at their middles.
+  const PolyMesh p = to_poly_mesh(structured_hex_mesh(Vec3::Zero(), Vec3(2, 1, 1), {1, 1, 1}));
+  const MeshGeometry g = mesh_geometry(p, build_cell_faces(p));
+  EXPECT_NEAR(g.cells[0].volume, 2.0, 1e-15);
+  EXPECT_NEAR((g.cells[0].centre - Vec3(1, 0.5, 0.5)).norm(), 0.0, 1e-15);
+  // A pentagon face with a mid-edge vertex keeps the centroid of the square.
+  std::vector<Vec3> pts{{0, 0, 0}, {1, 0, 0}, {1, 0.5, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<Index> loop{0, 1, 2, 3, 4};
+  const FaceGeometry fg = polygon_geometry(pts, loop);
+  EXPECT_NEAR((fg.area_vector - Vec3(0, 0, 1)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((fg.centre - Vec3(0.5, 0.5, 0)).norm(), 0.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace volmesh
