@@ -1,0 +1,40 @@
+#include "volmesh/quality/hex_metrics.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace volmesh {
+
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
+  // Corner k and its three neighbours, ordered as Verdict orders them so that the triple
+  // product is positive in a valid hex: bottom corners (next, previous, above), top corners
+  // (previous, next, below) around their quad.
+  constexpr int kCorner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
+                                 {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+  std::array<std::array<Vec3, 3>, 9> frames;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3& o = p[kCorner[k][0]];
+    frames[k] = {p[kCorner[k][1]] - o, p[kCorner[k][2]] - o, p[kCorner[k][3]] - o};
+  }
+  // Derivatives of the trilinear map at the centre (times 4).
+  frames[8] = {(p[1] + p[2] + p[5] + p[6]) - (p[0] + p[3] + p[4] + p[7]),
+               (p[2] + p[3] + p[6] + p[7]) - (p[0] + p[1] + p[4] + p[5]),
+               (p[4] + p[5] + p[6] + p[7]) - (p[0] + p[1] + p[2] + p[3])};
+
+  double longest2 = 0.0;
+  for (const auto& f : frames)
+    for (const Vec3& e : f) longest2 = std::max(longest2, e.squaredNorm());
+  constexpr double kCollapsed2 = 1e-24;  // (1e-12)²: relative length of a collapsed edge
+
+  double scaled = std::numeric_limits<double>::infinity();
+  for (const auto& [e1, e2, e3] : frames) {
+    const double l1 = e1.squaredNorm(), l2 = e2.squaredNorm(), l3 = e3.squaredNorm();
+    if (std::min({l1, l2, l3}) <= kCollapsed2 * longest2) return 0.0;
+    scaled = std::min(scaled, e1.dot(e2.cross(e3)) / std::sqrt(l1 * l2 * l3));
+  }
+  return scaled;
+}
+
+}  // namespace volmesh
