@@ -75,37 +75,24 @@ PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
   return poly;
 }
 
-// Local faces of cell c oriented outward, each as a vector of vertices.
-std::vector<std::vector<Index>> outward_faces(const PolyMesh& mesh, std::span<const Index> faces,
-                                              Index c) {
-  std::vector<std::vector<Index>> out;
-  out.reserve(faces.size());
-  for (Index f : faces) {
-    auto loop = mesh.face(f);
-    std::vector<Index> v(loop.begin(), loop.end());
-    if (mesh.owner[f] != c) std::reverse(v.begin(), v.end());
-    out.push_back(std::move(v));
-  }
-  return out;
+// Up to six faces of up to four corners: enough for tets and hexes, no heap allocation
+// (classify_cell runs once per cell of every mesh that is written or measured).
+using SmallLoops = std::array<std::array<Index, 4>, 6>;
+
+// The n faces' vertex sets, each sorted on its first k entries, then sorted as a list.
+SmallLoops canonical(SmallLoops loops, std::size_t n, std::size_t k) {
+  for (std::size_t i = 0; i < n; ++i) std::sort(loops[i].begin(), loops[i].begin() + k);
+  std::sort(loops.begin(), loops.begin() + n);
+  return loops;
 }
 
 template <std::size_t NF, std::size_t F>
-bool faces_match(const std::vector<std::vector<Index>>& faces, const std::array<Index, 8>& corners,
+bool faces_match(const SmallLoops& sorted_actual, const std::array<Index, 8>& corners,
                  const std::array<std::array<int, F>, NF>& local_faces) {
-  std::vector<std::vector<Index>> expected, actual;
-  for (const auto& lf : local_faces) {
-    std::vector<Index> k;
-    for (int l : lf) k.push_back(corners[l]);
-    std::sort(k.begin(), k.end());
-    expected.push_back(std::move(k));
-  }
-  for (auto f : faces) {
-    std::sort(f.begin(), f.end());
-    actual.push_back(std::move(f));
-  }
-  std::sort(expected.begin(), expected.end());
-  std::sort(actual.begin(), actual.end());
-  return expected == actual;
+  SmallLoops expected{};
+  for (std::size_t i = 0; i < NF; ++i)
+    for (std::size_t k = 0; k < F; ++k) expected[i][k] = corners[local_faces[i][k]];
+  return canonical(expected, NF, F) == sorted_actual;
 }
 
 template <class Mesh>
@@ -143,41 +130,42 @@ PolyMesh to_poly_mesh(const HexMesh& mesh) { return element_to_poly(mesh, kHexFa
 CellCorners classify_cell(const PolyMesh& mesh, const CellFaces& cell_faces, Index c) {
   CellCorners result;
   const auto faces = cell_faces.of(c);
-  std::size_t corner_sum = 0;
-  for (Index f : faces) corner_sum += mesh.face(f).size();
-  const bool tet_like = faces.size() == 4 && corner_sum == 12;
-  const bool hex_like = faces.size() == 6 && corner_sum == 24;
-  if (!tet_like && !hex_like) return result;
-  const auto loops = outward_faces(mesh, faces, c);
-  for (const auto& l : loops)
-    if (l.size() != (tet_like ? 3u : 4u)) return result;
+  const std::size_t n = faces.size();
+  if (n != 4 && n != 6) return result;
+  const std::size_t k = n == 4 ? 3 : 4;
+  SmallLoops loops{};  // outward from c
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto loop = mesh.face(faces[i]);
+    if (loop.size() != k) return result;
+    std::copy(loop.begin(), loop.end(), loops[i].begin());
+    if (mesh.owner[faces[i]] != c) std::reverse(loops[i].begin(), loops[i].begin() + k);
+  }
+  const SmallLoops sorted = canonical(loops, n, k);
+  const auto& f0 = loops[0];
+  const auto in_f0 = [&](Index v) { return std::find(f0.begin(), f0.begin() + k, v) != f0.begin() + k; };
 
-  if (tet_like) {
-    // Face 0 seen from outside is clockwise from the apex's side: reverse it for VTK.
-    const auto& base = loops[0];
+  if (n == 4) {
+    // Face 0 is seen counter-clockwise from outside; VTK wants it seen from the apex.
     Index apex = kNoIndex;
-    for (const auto& l : loops)
-      for (Index v : l)
-        if (std::find(base.begin(), base.end(), v) == base.end()) apex = v;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!in_f0(loops[1][i])) apex = loops[1][i];
     if (apex == kNoIndex) return result;
-    result.corners = {base[0], base[2], base[1], apex};
-    if (faces_match(loops, result.corners, kTetFaces)) result.shape = CellShape::Tetrahedron;
+    result.corners = {f0[0], f0[2], f0[1], apex};
+    if (faces_match(sorted, result.corners, kTetFaces)) result.shape = CellShape::Tetrahedron;
     return result;
   }
   // Hex: bottom = face 0 reversed (its normal then points into the cell, towards the top);
   // each bottom corner's top partner is the vertex joined to it by an edge off the bottom.
-  const auto& f0 = loops[0];
   const std::array<Index, 4> bottom{f0[0], f0[3], f0[2], f0[1]};
   std::array<Index, 8> corners{};
   for (int i = 0; i < 4; ++i) {
     corners[i] = bottom[i];
     Index partner = kNoIndex;
-    for (const auto& l : loops)
-      for (std::size_t k = 0; k < 4; ++k) {
-        const Index a = l[k], b = l[(k + 1) % 4];
+    for (std::size_t f = 1; f < 6; ++f)
+      for (std::size_t e = 0; e < 4; ++e) {
+        const Index a = loops[f][e], b = loops[f][(e + 1) % 4];
         const Index other = a == bottom[i] ? b : (b == bottom[i] ? a : kNoIndex);
-        if (other == kNoIndex || std::find(bottom.begin(), bottom.end(), other) != bottom.end())
-          continue;
+        if (other == kNoIndex || in_f0(other)) continue;
         if (partner != kNoIndex && partner != other) return result;
         partner = other;
       }
@@ -185,7 +173,7 @@ CellCorners classify_cell(const PolyMesh& mesh, const CellFaces& cell_faces, Ind
     corners[4 + i] = partner;
   }
   result.corners = corners;
-  if (faces_match(loops, corners, kHexFaces)) result.shape = CellShape::Hexahedron;
+  if (faces_match(sorted, corners, kHexFaces)) result.shape = CellShape::Hexahedron;
   return result;
 }
 
