@@ -28,14 +28,17 @@ struct SurfaceCheckOptions {
 
 // Checks a surface meant to bound a solid and fixes its global orientation (outward).
 // Throws InputError, naming `source` and the offending triangle/edge/vertex index, for:
-// no triangles, NaN/Inf coordinates, indices out of range, degenerate triangles, non-manifold
-// edges, boundary edges (holes), inconsistent orientation across an edge. Self-intersections
-// are reported, not thrown: the caller decides whether they are fatal.
+// no triangles, NaN/Inf coordinates, indices out of range, degenerate triangles (a repeated
+// vertex, or exactly collinear corners), non-manifold edges, boundary edges (holes),
+// inconsistent orientation across an edge. If the enclosed volume is negative, every triangle
+// is flipped (report.flipped, a warning). Self-intersections are reported, not thrown: the
+// caller decides whether they are fatal.
 SurfaceReport check_surface(TriSurface& surface, const std::string& source,
                             const SurfaceCheckOptions& options = {});
 
-// Pairs of triangles (i < j) that intersect in more than a shared vertex or edge, using
-// CGAL's exact predicates. At most max_pairs are returned; *truncated tells whether more exist.
+// Pairs of triangles (i < j, sorted) that intersect in more than a shared vertex or edge,
+// using CGAL's exact predicates; any triangle soup is accepted, degenerate triangles are
+// skipped. At most max_pairs are returned; *truncated tells whether more exist.
 std::vector<std::pair<Index, Index>> find_self_intersections(const TriSurface& surface,
                                                              std::size_t max_pairs,
                                                              bool* truncated = nullptr);
