@@ -88,6 +88,19 @@ TEST(Conversions, PolyhedronIsNotATet) {
   EXPECT_EQ(classify_cell(p, cf, 1).shape, CellShape::Hexahedron);
 }
 
+TEST(Conversions, InvertedInteriorTetIsRefused) {
+  // The central tet's faces are all owned by corner tets: its reversed vertex order shows
+  // only as a shared face that both cells orient alike.
+  TetMesh t = test::unit_cube_5_tets();
+  std::swap(t.cells[4][1], t.cells[4][2]);
+  try {
+    to_poly_mesh(t);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("inverted"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Conversions, FaceSharedByThreeCellsIsRefused) {
   TetMesh t;
   t.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1}};

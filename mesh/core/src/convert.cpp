@@ -12,6 +12,22 @@ namespace volmesh {
 
 namespace {
 
+template <class Mesh, class LocalFaces, class Entry>
+auto face_loop(const Mesh& mesh, const LocalFaces& local_faces, const Entry& e) {
+  std::array<Index, Mesh::kFaceCorners> loop;
+  for (int k = 0; k < Mesh::kFaceCorners; ++k) loop[k] = mesh.cells[e.cell][local_faces[e.local][k]];
+  return loop;
+}
+
+// True when b runs through a's vertices in the opposite cyclic direction.
+template <std::size_t F>
+bool opposite_loops(const std::array<Index, F>& a, const std::array<Index, F>& b) {
+  const auto start = std::find(b.begin(), b.end(), a[0]) - b.begin();
+  for (std::size_t k = 0; k < F; ++k)
+    if (b[(start + F - k) % F] != a[k]) return false;
+  return true;
+}
+
 template <int C, int F, std::size_t NF>
 PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
                          const std::array<std::array<int, std::size_t{F}>, NF>& local_faces) {
@@ -25,9 +41,9 @@ PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
   entries.reserve(mesh.cells.size() * NF);
   for (Index c = 0; c < mesh.num_cells(); ++c)
     for (std::size_t l = 0; l < NF; ++l) {
-      std::array<Index, F> loop;
-      for (int k = 0; k < F; ++k) loop[k] = mesh.cells[c][local_faces[l][k]];
-      entries.push_back({sorted_key<F>(loop), c, static_cast<int>(l)});
+      Entry e{{}, c, static_cast<int>(l)};
+      e.key = sorted_key<F>(face_loop(mesh, local_faces, e));
+      entries.push_back(e);
     }
   // Sorting by key pairs up shared faces; the stable order keeps the lower cell first.
   std::vector<std::size_t> order(entries.size());
@@ -55,7 +71,15 @@ PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
                        std::to_string(entries[order[i + 2]].cell) + ")");
     }
     if (j - i == 2) {
-      neighbour_of[order[i]] = entries[order[i + 1]].cell;
+      const Entry& a = entries[order[i]];
+      const Entry& b = entries[order[i + 1]];
+      // Two cells that see their shared face with the same orientation cannot both be
+      // positively ordered: one of them is inverted.
+      if (!opposite_loops(face_loop(mesh, local_faces, a), face_loop(mesh, local_faces, b)))
+        throw InputError("mesh: cells " + std::to_string(a.cell) + " and " +
+                         std::to_string(b.cell) +
+                         " order their shared face alike: one of them is inverted");
+      neighbour_of[order[i]] = b.cell;
       neighbour_of[order[i + 1]] = -2;
     }
     i = j;
@@ -63,8 +87,7 @@ PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
   for (std::size_t e = 0; e < entries.size(); ++e) {
     if (neighbour_of[e] == -2) continue;
     const Entry& en = entries[e];
-    std::array<Index, F> loop;
-    for (int k = 0; k < F; ++k) loop[k] = mesh.cells[en.cell][local_faces[en.local][k]];
+    const std::array<Index, F> loop = face_loop(mesh, local_faces, en);
     Index tag = kNoIndex;
     if (neighbour_of[e] == kNoIndex) {
       auto it = boundary_tag.find(en.key);
