@@ -1,7 +1,6 @@
 // volmesh check <mesh> [--surface S] [--json]: validity, quality, and the distance of the
 // mesh boundary to a reference surface.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <iostream>
 
 #include "commands.hpp"
@@ -10,6 +9,8 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/quality/measurements.hpp"
+#include "volmesh/quality/report.hpp"
 #include "volmesh/quality/surface_distance.hpp"
 
 namespace volmesh::cli {
@@ -17,7 +18,7 @@ namespace volmesh::cli {
 namespace {
 
 struct CheckOptions {
-  std::string mesh, surface;
+  std::string mesh, surface, quality_output;
   bool json = false;
 };
 
@@ -59,7 +60,20 @@ int run_check(const CheckOptions& opt) {
     std::cout << opt.mesh << "\n";
     print_validity(std::cout, validity);
   }
-  if (!opt.surface.empty()) j["surface"] = surface_comparison(mesh, validity, opt.surface, opt.json);
+  // Geometry is meaningless when faces point at vertices or cells that do not exist.
+  if (validity.bad_indices == 0) {
+    const QualityMeasurements measured = measure_quality(mesh);
+    const QualityReport quality = quality_report(mesh, measured);
+    j["quality"] = to_json(quality);
+    if (!opt.json) print_quality(std::cout, quality);
+    if (!opt.quality_output.empty()) {
+      MeshFields fields;
+      for (NamedArray& a : cell_quality_arrays(measured.cells))
+        fields.cell.push_back({std::move(a.name), 1, std::move(a.values)});
+      write_vtu(mesh, opt.quality_output, fields);
+    }
+  }
+  if (!opt.surface.empty() && validity.bad_indices == 0) j["surface"] = surface_comparison(mesh, validity, opt.surface, opt.json);
   if (opt.json) std::cout << j.dump(2) << "\n";
   if (!validity.valid()) {
     std::cerr << "volmesh: error: " << opt.mesh << ": invalid mesh"
@@ -78,6 +92,8 @@ Command add_check_command(CLI::App& root) {
   app->add_option("--surface", opt->surface,
                   "reference surface: report the volume error and the two-sided Hausdorff "
                   "distance of the mesh boundary, relative to the bounding-box diagonal");
+  app->add_option("-o,--quality-vtu", opt->quality_output,
+                  "write the mesh with one cell array per quality metric (.vtu)");
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   return {app, [opt] { return run_check(*opt); }};
 }

@@ -7,6 +7,7 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh::cli {
@@ -22,7 +23,11 @@ int run_convert(const ConvertOptions& opt) {
   if (is_surface_file(opt.input)) {
     if (!is_surface_file(opt.output))
       throw InputError(opt.output + ": a surface converts to .stl .off .obj or .ply");
-    write_surface(read_surface(opt.input), opt.output);
+    // Surfaces here bound solids: refuse holes and the like rather than pass them on.
+    TriSurface surface = read_surface(opt.input);
+    const SurfaceReport report = check_surface(surface, opt.input);
+    for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+    write_surface(surface, opt.output);
     return 0;
   }
   const PolyMesh mesh = read_mesh(opt.input);

@@ -17,5 +17,6 @@ struct Command {
 Command add_info_command(CLI::App& root);
 Command add_convert_command(CLI::App& root);
 Command add_check_command(CLI::App& root);
+Command add_demo_command(CLI::App& root);
 
 }  // namespace volmesh::cli

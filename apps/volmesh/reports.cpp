@@ -4,6 +4,15 @@
 
 namespace volmesh::cli {
 
+namespace {
+
+void print_nonzero(std::ostream& os, std::initializer_list<std::pair<const char*, Index>> counts) {
+  for (const auto& [what, n] : counts)
+    if (n > 0) os << "  " << what << ": " << n << "\n";
+}
+
+}  // namespace
+
 nlohmann::json to_json(const Box& b) {
   return {{"min", {b.lo.x(), b.lo.y(), b.lo.z()}},
           {"max", {b.hi.x(), b.hi.y(), b.hi.z()}},
@@ -52,6 +61,47 @@ nlohmann::json to_json(const SurfaceReport& r) {
           {"warnings", r.warnings}};
 }
 
+nlohmann::json to_json(const QualityReport& r) {
+  nlohmann::json metrics = nlohmann::json::object();
+  for (const MetricSummary& m : r.metrics)
+    metrics[m.name] = {{"count", m.count},
+                       {"min", m.min},
+                       {"max", m.max},
+                       {"mean", m.mean},
+                       {"histogram",
+                        {{"lo", m.histogram.lo}, {"hi", m.histogram.hi}, {"counts", m.histogram.counts}}}};
+  return {{"cells", r.cells},
+          {"tets", r.tets},
+          {"hexes", r.hexes},
+          {"polyhedra", r.polyhedra},
+          {"inverted_tets", r.inverted_tets},
+          {"inverted_hexes", r.inverted_hexes},
+          {"degenerate_hexes", r.degenerate_hexes},
+          {"non_positive_cells", r.non_positive_cells},
+          {"severely_non_orthogonal_faces", r.severely_non_orthogonal_faces},
+          {"highly_skewed_faces", r.highly_skewed_faces},
+          {"min_volume", r.min_volume},
+          {"max_neighbour_volume_ratio", r.max_neighbour_volume_ratio},
+          {"metrics", metrics}};
+}
+
+void print_quality(std::ostream& os, const QualityReport& r) {
+  os << "quality: " << r.tets << " tets, " << r.hexes << " hexes, " << r.polyhedra
+     << " polyhedra\n";
+  print_nonzero(os, {{"inverted tets", r.inverted_tets},
+                     {"inverted hexes", r.inverted_hexes},
+                     {"degenerate hexes", r.degenerate_hexes},
+                     {"faces non-orthogonal beyond 70 degrees", r.severely_non_orthogonal_faces},
+                     {"faces with skewness above 4", r.highly_skewed_faces}});
+  os << std::setprecision(6);
+  for (const MetricSummary& m : r.metrics) {
+    if (m.count == 0) continue;
+    os << "  " << std::left << std::setw(28) << m.name << std::right << " min " << std::setw(12)
+       << m.min << "  max " << std::setw(12) << m.max << "  mean " << std::setw(12) << m.mean
+       << "  (" << m.count << ")\n";
+  }
+}
+
 void print_validity(std::ostream& os, const ValidityReport& r) {
   os << "cells " << r.cells << ", faces " << r.faces << " (" << r.boundary_faces
      << " on the boundary), points " << r.points << "\n";
@@ -60,18 +110,15 @@ void print_validity(std::ostream& os, const ValidityReport& r) {
   for (const auto& [region, volume] : r.region_volume)
     os << "  region " << region << ": volume " << volume << "\n";
   os << "validity: " << (r.valid() ? "OK" : "INVALID") << "\n";
-  const std::pair<const char*, Index> counts[] = {
-      {"indices out of range", r.bad_indices},
-      {"degenerate faces", r.degenerate_faces},
-      {"open cells", r.open_cells},
-      {"cells with unmatched edges", r.unmatched_cell_edges},
-      {"cells with volume <= 0", r.non_positive_cells},
-      {"duplicate faces", r.duplicate_faces},
-      {"faces with owner == neighbour", r.bad_face_order},
-      {"open edges of region boundaries", r.open_region_boundary_edges},
-      {"unused points (not an error)", r.unused_points}};
-  for (const auto& [what, n] : counts)
-    if (n > 0) os << "  " << what << ": " << n << "\n";
+  print_nonzero(os, {{"indices out of range", r.bad_indices},
+                     {"degenerate faces", r.degenerate_faces},
+                     {"open cells", r.open_cells},
+                     {"cells with unmatched edges", r.unmatched_cell_edges},
+                     {"cells with volume <= 0", r.non_positive_cells},
+                     {"duplicate faces", r.duplicate_faces},
+                     {"faces with owner == neighbour", r.bad_face_order},
+                     {"open edges of region boundaries", r.open_region_boundary_edges},
+                     {"unused points (not an error)", r.unused_points}});
   for (const auto& p : r.problems) os << "  - " << p << "\n";
 }
 

@@ -6,14 +6,17 @@
 #include "mesh_input.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/surface_check.hpp"
+#include "volmesh/quality/report.hpp"
 
 namespace volmesh::cli {
 
 nlohmann::json to_json(const ValidityReport& r);
 nlohmann::json to_json(const SurfaceReport& r);
 nlohmann::json to_json(const Box& b);
+nlohmann::json to_json(const QualityReport& r);
 
 void print_validity(std::ostream& os, const ValidityReport& r);
 void print_surface(std::ostream& os, const SurfaceReport& r);
+void print_quality(std::ostream& os, const QualityReport& r);
 
 }  // namespace volmesh::cli

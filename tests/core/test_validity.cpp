@@ -20,11 +20,14 @@ TEST(Validity, HangingNodeMeshIsClosedAndConforming) {
 }
 
 TEST(Validity, FlippedTetIsReportedInverted) {
-  TetMesh t = test::unit_cube_5_tets();
-  std::swap(t.cells[0][1], t.cells[0][2]);
+  TetMesh t;  // alone, a reversed tet owns its faces, which then point inward
+  t.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  t.cells = {{0, 2, 1, 3}};
+  t.cell_region = {1};
   const ValidityReport r = check_validity(to_poly_mesh(t));
   EXPECT_FALSE(r.valid());
-  EXPECT_GE(r.non_positive_cells, 1);
+  EXPECT_EQ(r.non_positive_cells, 1);
+  EXPECT_DOUBLE_EQ(r.total_volume, -1.0 / 6.0);
 }
 
 TEST(Validity, MissingVertexOnAnEdgeIsATJunction) {

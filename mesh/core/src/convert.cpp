@@ -1,101 +1,25 @@
 #include "volmesh/core/convert.hpp"
 
 #include <algorithm>
-#include <map>
-#include <numeric>
 #include <string>
 
-#include "face_matching.hpp"
+#include "volmesh/core/cell_soup.hpp"
 #include "volmesh/core/errors.hpp"
 
 namespace volmesh {
 
 namespace {
 
-template <class Mesh, class LocalFaces, class Entry>
-auto face_loop(const Mesh& mesh, const LocalFaces& local_faces, const Entry& e) {
-  std::array<Index, Mesh::kFaceCorners> loop;
-  for (int k = 0; k < Mesh::kFaceCorners; ++k) loop[k] = mesh.cells[e.cell][local_faces[e.local][k]];
-  return loop;
-}
-
-// True when b runs through a's vertices in the opposite cyclic direction.
-template <std::size_t F>
-bool opposite_loops(const std::array<Index, F>& a, const std::array<Index, F>& b) {
-  const auto start = std::find(b.begin(), b.end(), a[0]) - b.begin();
-  for (std::size_t k = 0; k < F; ++k)
-    if (b[(start + F - k) % F] != a[k]) return false;
-  return true;
-}
-
-template <int C, int F, std::size_t NF>
-PolyMesh element_to_poly(const ElementMesh<C, F>& mesh,
-                         const std::array<std::array<int, std::size_t{F}>, NF>& local_faces) {
-  using Key = std::array<Index, F>;
-  struct Entry {
-    Key key;
-    Index cell;
-    int local;
-  };
-  std::vector<Entry> entries;
-  entries.reserve(mesh.cells.size() * NF);
+template <class Mesh>
+PolyMesh element_to_poly(const Mesh& mesh, LinearCell kind) {
+  CellSoup soup("mesh");
+  soup.points = mesh.points;
+  soup.tag_names = mesh.tag_names;
   for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (std::size_t l = 0; l < NF; ++l) {
-      Entry e{{}, c, static_cast<int>(l)};
-      e.key = sorted_key<F>(face_loop(mesh, local_faces, e));
-      entries.push_back(e);
-    }
-  // Sorting by key pairs up shared faces; the stable order keeps the lower cell first.
-  std::vector<std::size_t> order(entries.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return entries[a].key < entries[b].key; });
-
-  std::map<Key, Index> boundary_tag;
+    soup.add_cell(kind, mesh.cells[c], mesh.cell_region[c]);
   for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i)
-    boundary_tag[sorted_key<F>(mesh.boundary_faces[i])] = mesh.boundary_tag[i];
-
-  PolyMesh poly;
-  poly.points = mesh.points;
-  poly.cell_region = mesh.cell_region;
-  poly.tag_names = mesh.tag_names;
-  // neighbour_of[e] for the owning entry e of each face; -2 marks the non-owning entry.
-  std::vector<Index> neighbour_of(entries.size(), kNoIndex);
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i + 1;
-    while (j < order.size() && entries[order[j]].key == entries[order[i]].key) ++j;
-    if (j - i > 2) {
-      throw InputError("mesh: face shared by " + std::to_string(j - i) + " cells (cells " +
-                       std::to_string(entries[order[i]].cell) + ", " +
-                       std::to_string(entries[order[i + 1]].cell) + ", " +
-                       std::to_string(entries[order[i + 2]].cell) + ")");
-    }
-    if (j - i == 2) {
-      const Entry& a = entries[order[i]];
-      const Entry& b = entries[order[i + 1]];
-      // Two cells that see their shared face with the same orientation cannot both be
-      // positively ordered: one of them is inverted.
-      if (!opposite_loops(face_loop(mesh, local_faces, a), face_loop(mesh, local_faces, b)))
-        throw InputError("mesh: cells " + std::to_string(a.cell) + " and " +
-                         std::to_string(b.cell) +
-                         " order their shared face alike: one of them is inverted");
-      neighbour_of[order[i]] = b.cell;
-      neighbour_of[order[i + 1]] = -2;
-    }
-    i = j;
-  }
-  for (std::size_t e = 0; e < entries.size(); ++e) {
-    if (neighbour_of[e] == -2) continue;
-    const Entry& en = entries[e];
-    const std::array<Index, F> loop = face_loop(mesh, local_faces, en);
-    Index tag = kNoIndex;
-    if (neighbour_of[e] == kNoIndex) {
-      auto it = boundary_tag.find(en.key);
-      tag = it != boundary_tag.end() ? it->second : poly.tag_index("boundary");
-    }
-    poly.add_face(loop, en.cell, neighbour_of[e], tag);
-  }
-  return poly;
+    soup.add_tagged_face(mesh.boundary_faces[i], mesh.boundary_tag[i]);
+  return cells_to_poly(std::move(soup));
 }
 
 // Up to six faces of up to four corners: enough for tets and hexes, no heap allocation
@@ -147,8 +71,8 @@ Mesh poly_to_elements(const PolyMesh& mesh, CellShape shape, const char* name) {
 
 }  // namespace
 
-PolyMesh to_poly_mesh(const TetMesh& mesh) { return element_to_poly(mesh, kTetFaces); }
-PolyMesh to_poly_mesh(const HexMesh& mesh) { return element_to_poly(mesh, kHexFaces); }
+PolyMesh to_poly_mesh(const TetMesh& mesh) { return element_to_poly(mesh, LinearCell::Tetrahedron); }
+PolyMesh to_poly_mesh(const HexMesh& mesh) { return element_to_poly(mesh, LinearCell::Hexahedron); }
 
 CellCorners classify_cell(const PolyMesh& mesh, const CellFaces& cell_faces, Index c) {
   CellCorners result;

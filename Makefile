@@ -1,0 +1,49 @@
+# The two commands of the README: `make demo` (the main job) and `make test` (build and pass
+# the tests). Both install the Debian 12 packages they need when missing.
+SHELL := /bin/bash
+BUILD := build/release
+ASAN_BUILD := build/asan
+JOBS ?= $(shell nproc)
+
+BUILD_PACKAGES := cmake ninja-build g++ ccache pkg-config libeigen3-dev libcgal-dev libgmp-dev \
+  libmpfr-dev libvtk9-dev libmetis-dev libgtest-dev libcli11-dev nlohmann-json3-dev \
+  libtbb-dev zlib1g-dev
+# Third-party readers the round-trip tests check our output with, and the test surfaces.
+TEST_PACKAGES := python3 python3-meshio gmsh openfoam libcgal-demo
+
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+missing = $(shell for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done)
+
+.PHONY: demo test test-sanitize build deps-build deps-test clean
+
+deps-build:
+	@m="$(call missing,$(BUILD_PACKAGES))"; if [ -n "$$m" ]; then \
+	  echo "installing: $$m"; $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$m; fi
+
+deps-test: deps-build
+	@m="$(call missing,$(TEST_PACKAGES))"; if [ -n "$$m" ]; then \
+	  echo "installing: $$m"; $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$m; fi
+
+build: deps-build
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/apps/volmesh/volmesh demo -o demo-output
+
+test: deps-test build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# The unit tests once more under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
+# after `make test`); any report fails the run.
+test-sanitize: deps-test
+	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DVOLMESH_SANITIZE=ON \
+	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -L unit
+
+clean:
+	rm -rf build demo-output

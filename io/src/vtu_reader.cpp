@@ -1,0 +1,204 @@
+// VTU input through VTK's XML reader: tetrahedra, hexahedra, wedges, pyramids and polyhedra
+// become PolyMesh cells; "region" cell data and the writer's boundary tags are read back.
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "volmesh/core/cell_soup.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/io/mesh_io.hpp"
+#include "vtu_boundary_tags.hpp"
+#include "vtu_errors.hpp"
+
+namespace volmesh {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class VtuCells {
+ public:
+  VtuCells(vtkUnstructuredGrid& grid, std::string source)
+      : grid_(grid), source_(std::move(source)), soup_(source_) {}
+
+  PolyMesh read() {
+    read_points();
+    read_cells();
+    read_boundary_tags();
+    return cells_to_poly(std::move(soup_));
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(source_ + ": " + what); }
+
+  Index checked_count(vtkIdType n, const char* what) const {
+    if (n > kMaxIndex) fail(std::to_string(n) + " " + what + ": more than 32-bit indices allow");
+    return static_cast<Index>(n);
+  }
+
+  Index point_id(vtkIdType id, const std::string& entity) const {
+    if (id < 0 || id >= static_cast<vtkIdType>(soup_.points.size()))
+      fail(entity + ": point index " + std::to_string(id) + " out of range (" +
+           std::to_string(soup_.points.size()) + " points)");
+    return static_cast<Index>(id);
+  }
+
+  void read_points() {
+    const Index n = checked_count(grid_.GetNumberOfPoints(), "points");
+    soup_.points.resize(n);
+    for (Index p = 0; p < n; ++p) grid_.GetPoint(p, soup_.points[p].data());
+  }
+
+  std::vector<Index> regions(Index num_cells) const {
+    std::vector<Index> region(num_cells, 1);
+    vtkDataArray* array = grid_.GetCellData()->GetArray("region");
+    if (array == nullptr) return region;
+    if (array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != num_cells)
+      fail("cell data 'region': expected one value per cell");
+    for (Index c = 0; c < num_cells; ++c) {
+      const double r = array->GetTuple1(c);
+      if (!(r >= 1.0 && r <= static_cast<double>(kMaxIndex)) || r != std::floor(r))
+        fail("cell " + std::to_string(c) + ": region " + std::to_string(r) +
+             " (regions are integers >= 1)");
+      region[c] = static_cast<Index>(r);
+    }
+    return region;
+  }
+
+  void read_cells() {
+    const Index num_cells = checked_count(grid_.GetNumberOfCells(), "cells");
+    const std::vector<Index> region = regions(num_cells);
+    std::vector<Index> corners;
+    for (Index c = 0; c < num_cells; ++c) {
+      const int type = grid_.GetCellType(c);
+      if (type == VTK_POLYHEDRON) {
+        read_polyhedron(c, region[c]);
+        continue;
+      }
+      vtkIdType npts = 0;
+      const vtkIdType* pts = nullptr;
+      grid_.GetCellPoints(c, npts, pts);
+      const std::string entity = "cell " + std::to_string(c);
+      corners.clear();
+      for (vtkIdType i = 0; i < npts; ++i) corners.push_back(point_id(pts[i], entity));
+      soup_.add_cell(linear_cell(type, npts, entity), corners, region[c]);
+    }
+  }
+
+  LinearCell linear_cell(int type, vtkIdType npts, const std::string& entity) const {
+    auto expect = [&](LinearCell kind, vtkIdType corners) {
+      if (npts != corners)
+        fail(entity + ": VTK cell type " + std::to_string(type) + " with " + std::to_string(npts) +
+             " points instead of " + std::to_string(corners));
+      return kind;
+    };
+    switch (type) {
+      case VTK_TETRA: return expect(LinearCell::Tetrahedron, 4);
+      case VTK_HEXAHEDRON: return expect(LinearCell::Hexahedron, 8);
+      case VTK_WEDGE: return expect(LinearCell::Wedge, 6);
+      case VTK_PYRAMID: return expect(LinearCell::Pyramid, 5);
+      default:
+        fail(entity + ": VTK cell type " + std::to_string(type) +
+             " is not read (tetra, hexahedron, wedge, pyramid and polyhedron are)");
+    }
+  }
+
+  // The face stream [nfaces, n, v_1 .. v_n, ...] at the cell's face location, bounds-checked
+  // because VTK does not validate it.
+  void read_polyhedron(Index c, Index region) {
+    const std::string entity = "cell " + std::to_string(c);
+    vtkIdTypeArray* stream = grid_.GetFaces();
+    vtkIdTypeArray* locations = grid_.GetFaceLocations();
+    if (stream == nullptr || locations == nullptr || locations->GetNumberOfValues() <= c)
+      fail(entity + ": polyhedron without faces");
+    const vtkIdType size = stream->GetNumberOfValues();
+    vtkIdType at = locations->GetValue(c);
+    auto next = [&]() {
+      if (at < 0 || at >= size) fail(entity + ": polyhedron face stream ends early");
+      return stream->GetValue(at++);
+    };
+    const vtkIdType num_faces = next();
+    if (num_faces < 4 || num_faces > size)
+      fail(entity + ": polyhedron with " + std::to_string(num_faces) + " faces");
+    std::vector<Index> loop;
+    for (vtkIdType f = 0; f < num_faces; ++f) {
+      const vtkIdType n = next();
+      if (n < 0 || n > size)
+        fail(entity + ": polyhedron face with " + std::to_string(n) + " vertices");
+      loop.clear();
+      for (vtkIdType i = 0; i < n; ++i) loop.push_back(point_id(next(), entity));
+      soup_.add_face(loop);
+    }
+    soup_.end_cell(region);
+  }
+
+  void read_boundary_tags() {
+    vtkFieldData* data = grid_.GetFieldData();
+    std::vector<Index> loop;
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+      vtkDataArray* array = data->GetArray(a);
+      const char* name = data->GetArrayName(a);
+      if (array == nullptr || name == nullptr ||
+          !std::string_view(name).starts_with(kBoundaryArrayPrefix))
+        continue;
+      const std::string entity = std::string("field data '") + name + "'";
+      const Index tag = static_cast<Index>(soup_.tag_names.size());
+      soup_.tag_names.push_back(boundary_tag_name(name + kBoundaryArrayPrefix.size()));
+      if (array->GetNumberOfComponents() != 1) fail(entity + ": expected one component");
+      const vtkIdType size = array->GetNumberOfTuples();
+      auto value = [&](vtkIdType at) {
+        const double v = array->GetTuple1(at);
+        if (!(std::abs(v) < 9e15) || v != std::floor(v)) fail(entity + ": non-integer entry");
+        return static_cast<vtkIdType>(v);
+      };
+      for (vtkIdType at = 0; at < size;) {
+        const vtkIdType n = value(at++);
+        if (n < 0 || n > size - at) fail(entity + ": face list ends early");
+        loop.clear();
+        for (vtkIdType i = 0; i < n; ++i) loop.push_back(point_id(value(at++), entity));
+        soup_.add_tagged_face(loop, tag);
+      }
+    }
+  }
+
+  vtkUnstructuredGrid& grid_;
+  std::string source_;
+  CellSoup soup_;
+};
+
+}  // namespace
+
+PolyMesh read_vtu(const fs::path& path) {
+  const std::string source = path.string();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(source + ": cannot open (no such file, or not a regular file)");
+  const VtkErrors errors;
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(path.c_str());
+  try {
+    reader->Update();
+  } catch (const std::exception& e) {
+    // A corrupt compression header makes VTK allocate from it (std::bad_alloc or
+    // std::length_error escape from vtkXMLDataParser).
+    throw InputError(source + ": not a readable VTU file (corrupt data: " + e.what() + ")");
+  }
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  if (!errors.first().empty() || grid == nullptr)
+    throw InputError(source + ": not a readable VTU file (" +
+                     (errors.first().empty() ? std::string("no grid") : errors.first()) + ")");
+  return VtuCells(*grid, source).read();
+}
+
+}  // namespace volmesh
