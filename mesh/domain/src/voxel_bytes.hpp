@@ -1,0 +1,28 @@
+#pragma once
+// Numbers in a file's byte order, whatever the host's.
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <string>
+
+namespace volmesh::voxel {
+
+template <class T>
+T load(const char* bytes, bool big_endian) {
+  char buf[sizeof(T)];
+  std::memcpy(buf, bytes, sizeof(T));
+  if (big_endian != (std::endian::native == std::endian::big)) std::reverse(buf, buf + sizeof(T));
+  T value;
+  std::memcpy(&value, buf, sizeof(T));
+  return value;
+}
+
+template <class T>
+void append(std::string& out, T value, bool big_endian) {
+  char buf[sizeof(T)];
+  std::memcpy(buf, &value, sizeof(T));
+  if (big_endian != (std::endian::native == std::endian::big)) std::reverse(buf, buf + sizeof(T));
+  out.append(buf, sizeof(T));
+}
+
+}  // namespace volmesh::voxel
