@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "surface_bytes.hpp"
+#include "volmesh/core/byte_order.hpp"
 #include "surface_file.hpp"
 #include "surface_text.hpp"
 #include "volmesh/io/surface_io.hpp"
@@ -14,6 +14,7 @@ namespace volmesh {
 
 namespace fs = std::filesystem;
 using namespace surface_detail;
+using namespace byte_order;
 
 namespace {
 
@@ -294,12 +295,12 @@ void write_ply(const TriSurface& surface, const fs::path& path) {
            std::to_string(surface.triangles.size()) +
            "\nproperty list uchar int vertex_indices\nend_header\n";
     for (const Vec3& p : surface.points) {
-      for (int k = 0; k < 3; ++k) append_le<double>(out, p[k]);
+      for (int k = 0; k < 3; ++k) append<double>(out, p[k], false);
       writer.flush_if_full();
     }
     for (const auto& t : surface.triangles) {
-      append_le<std::uint8_t>(out, 3);
-      for (Index v : t) append_le<std::int32_t>(out, v);
+      append<std::uint8_t>(out, 3, false);
+      for (Index v : t) append<std::int32_t>(out, v, false);
       writer.flush_if_full();
     }
   });

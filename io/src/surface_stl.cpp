@@ -4,7 +4,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "surface_bytes.hpp"
+#include "volmesh/core/byte_order.hpp"
 #include "surface_file.hpp"
 #include "surface_text.hpp"
 #include "volmesh/io/surface_io.hpp"
@@ -13,6 +13,7 @@ namespace volmesh {
 
 namespace fs = std::filesystem;
 using namespace surface_detail;
+using namespace byte_order;
 
 namespace {
 
@@ -200,9 +201,9 @@ void write_stl(const TriSurface& surface, const fs::path& path) {
     std::string header = "binary STL written by volmesh";
     header.resize(80, ' ');
     out += header;
-    append_le<std::uint32_t>(out, static_cast<std::uint32_t>(surface.triangles.size()));
+    append<std::uint32_t>(out, static_cast<std::uint32_t>(surface.triangles.size()), false);
     auto append_vec3 = [&](const Vec3& v) {
-      for (int k = 0; k < 3; ++k) append_le<float>(out, static_cast<float>(v[k]));
+      for (int k = 0; k < 3; ++k) append<float>(out, static_cast<float>(v[k]), false);
     };
     for (const auto& t : surface.triangles) {
       const Vec3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
@@ -210,7 +211,7 @@ void write_stl(const TriSurface& surface, const fs::path& path) {
       append_vec3(a);
       append_vec3(b);
       append_vec3(c);
-      append_le<std::uint16_t>(out, 0);
+      append<std::uint16_t>(out, 0, false);
       writer.flush_if_full();
     }
   });

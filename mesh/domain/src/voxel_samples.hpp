@@ -9,9 +9,12 @@
 
 #include "volmesh/core/types.hpp"
 #include "volmesh/domain/voxel_grid.hpp"
-#include "voxel_bytes.hpp"
+#include "volmesh/core/byte_order.hpp"
 
 namespace volmesh::voxel {
+
+using byte_order::append;
+using byte_order::load;
 
 enum class SampleType { u8, i8, u16, i16, u32, i32, f32, f64 };
 

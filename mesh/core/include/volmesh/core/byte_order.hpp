@@ -1,11 +1,12 @@
 #pragma once
-// Numbers in a file's byte order, whatever the host's.
+// Loading and storing binary numbers in a file's byte order, whatever the host's: shared by
+// the binary surface, image and voxel formats.
 #include <algorithm>
 #include <bit>
 #include <cstring>
 #include <string>
 
-namespace volmesh::voxel {
+namespace volmesh::byte_order {
 
 template <class T>
 T load(const char* bytes, bool big_endian) {
@@ -25,4 +26,4 @@ void append(std::string& out, T value, bool big_endian) {
   out.append(buf, sizeof(T));
 }
 
-}  // namespace volmesh::voxel
+}  // namespace volmesh::byte_order
