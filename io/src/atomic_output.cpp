@@ -10,11 +10,12 @@ namespace volmesh {
 
 namespace fs = std::filesystem;
 
-AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
+AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target).lexically_normal()) {
+  // "case.foam/" names the directory itself, not something inside it.
+  if (!target_.has_filename()) target_ = target_.parent_path();
   // Same directory as the target, so that the rename cannot cross file systems.
-  fs::path name = target_.filename();
-  if (name.empty()) name = target_.parent_path().filename();
-  temporary_ = target_.parent_path() / ("." + name.string() + ".tmp" + std::to_string(::getpid()));
+  temporary_ = target_.parent_path() /
+               ("." + target_.filename().string() + ".tmp" + std::to_string(::getpid()));
   if (!target_.parent_path().empty() && !fs::is_directory(target_.parent_path()))
     throw InputError(target_.string() + ": output directory " +
                      target_.parent_path().string() + " does not exist");
