@@ -18,5 +18,6 @@ Command add_info_command(CLI::App& root);
 Command add_convert_command(CLI::App& root);
 Command add_check_command(CLI::App& root);
 Command add_demo_command(CLI::App& root);
+Command add_sdf_command(CLI::App& root);
 
 }  // namespace volmesh::cli

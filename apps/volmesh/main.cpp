@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   volmesh convert part.stl part.off         surfaces convert too)");
 
   std::vector<cli::Command> commands{cli::add_info_command(app), cli::add_convert_command(app),
-                                     cli::add_check_command(app), cli::add_demo_command(app)};
+                                     cli::add_check_command(app), cli::add_demo_command(app),
+                                     cli::add_sdf_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
