@@ -4,8 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <chrono>
-#include <cmath>
+#include <filesystem>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -96,7 +98,7 @@ int run_sdf(const SdfOptions& opt) {
                            {"inside_samples", inside},
                            {"self_intersections", report.self_intersections.size()},
                            {"seconds",
-                            {{"read", read_time},
+                            {{"read_and_check", read_time},
                              {"distance", distance_time},
                              {"write", write_time},
                              {"total", seconds_since(start)}}}};
