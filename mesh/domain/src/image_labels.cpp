@@ -100,8 +100,7 @@ void encode(LabelImage& image, std::int64_t count, Get get, const std::string& s
 LabelImage from_samples(const Samples& samples, const fs::path& path) {
   LabelImage image;
   const SampleLayout& l = samples.layout;
-  image.dims = {static_cast<Index>(l.dims[0]), static_cast<Index>(l.dims[1]),
-                static_cast<Index>(l.dims[2])};
+  image.dims = l.index_dims();
   image.spacing = l.spacing;
   image.origin = l.origin;
   with_sample_type(l.type, [&](auto tag) {

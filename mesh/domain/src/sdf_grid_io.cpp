@@ -30,8 +30,7 @@ float checked_float(double value, const std::array<Index, 3>& dims, std::int64_t
 VoxelGrid to_voxel_grid(const Samples& samples, const fs::path& path, const std::string& field) {
   VoxelGrid grid;
   const SampleLayout& l = samples.layout;
-  grid.dims = {static_cast<Index>(l.dims[0]), static_cast<Index>(l.dims[1]),
-               static_cast<Index>(l.dims[2])};
+  grid.dims = l.index_dims();
   grid.origin = l.origin;
   grid.spacing = l.spacing;
   check_grid_dims(grid.dims, path, field);

@@ -50,6 +50,11 @@ struct SampleLayout {
   Vec3 origin = Vec3::Zero();          // position of sample (0, 0, 0)
   SampleType type = SampleType::u8;
   bool big_endian = false;
+
+  // Valid once the reader has checked the sample count against the 32-bit index range.
+  std::array<Index, 3> index_dims() const {
+    return {static_cast<Index>(dims[0]), static_cast<Index>(dims[1]), static_cast<Index>(dims[2])};
+  }
 };
 
 struct Samples {
