@@ -136,7 +136,7 @@ AnalyticDomain::Nearest AnalyticDomain::nearest_interface(const Vec3& p) const {
 
 Vec3 AnalyticDomain::normal(const Vec3& p) const { return nearest_interface(p).normal; }
 
-const std::string& AnalyticDomain::surface_name(const Vec3& p) const {
+std::string AnalyticDomain::surface_name(const Vec3& p) const {
   return primitives_[nearest_interface(p).primitive].name;
 }
 

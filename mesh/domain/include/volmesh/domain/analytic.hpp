@@ -97,7 +97,7 @@ class AnalyticDomain final : public Domain {
   std::vector<Index> regions() const override { return regions_; }
 
   // Name of the primitive whose surface normal(p) uses: the nearest interface.
-  const std::string& surface_name(const Vec3& p) const;
+  std::string surface_name(const Vec3& p) const override;
   std::span<const Primitive> primitives() const { return primitives_; }
 
  private:

@@ -2,6 +2,7 @@
 // What every mesher takes (DESIGN.md §4): a partition of space into regions, with the
 // interfaces between them. Region 0 is outside; regions are numbered from 1.
 #include <span>
+#include <string>
 #include <vector>
 
 #include "volmesh/core/types.hpp"
@@ -40,6 +41,9 @@ class Domain {
   virtual Box3 bounds() const = 0;
   // The region labels that occur (>= 1), sorted.
   virtual std::vector<Index> regions() const = 0;
+  // Name of the interface nearest to p, for tagging boundary faces (e.g. "inner", "outer");
+  // empty when the domain does not name its surfaces.
+  virtual std::string surface_name(const Vec3& p) const { return {}; }
 
   // Batch versions: both cores, same results as the single queries in the same order.
   // Subclasses override them where a batch can be answered faster than point by point.
