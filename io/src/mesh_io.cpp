@@ -23,7 +23,7 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 bool is_mesh_file(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".vtu" || ext == ".msh";
+  return ext == ".vtu" || ext == ".msh" || ext == ".foam";
 }
 
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path, const MeshFields& fields) {
@@ -42,7 +42,8 @@ PolyMesh read_mesh(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".vtu") return read_vtu(path);
   if (ext == ".msh") return read_msh(path);
-  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .msh)");
+  if (ext == ".foam") return read_foam(path);
+  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .msh, a DIR.foam case)");
 }
 
 }  // namespace volmesh

@@ -30,7 +30,8 @@ struct MeshFields {
 // take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell.
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
                 const MeshFields& fields = {});
-// Reads by extension: .vtu, .msh.
+// Reads by extension: .vtu, .msh, or an OpenFOAM case (a directory ending in .foam, or its
+// .foam marker file).
 PolyMesh read_mesh(const std::filesystem::path& path);
 
 bool is_mesh_file(const std::filesystem::path& path);
@@ -45,5 +46,7 @@ PolyMesh read_msh(const std::filesystem::path& path);
 void write_medit(const PolyMesh& mesh, const std::filesystem::path& path);
 void write_abaqus(const PolyMesh& mesh, const std::filesystem::path& path);
 void write_foam(const PolyMesh& mesh, const std::filesystem::path& case_dir);
+// ASCII constant/polyMesh (plain or .gz); cellZones "region_<r>" give regions, patches tags.
+PolyMesh read_foam(const std::filesystem::path& case_dir);
 
 }  // namespace volmesh
