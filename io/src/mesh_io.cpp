@@ -19,11 +19,15 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
+bool is_foam_case(const std::filesystem::path& path) {
+  return std::filesystem::is_directory(path / "constant" / "polyMesh");
+}
+
 }  // namespace
 
 bool is_mesh_file(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".vtu" || ext == ".msh" || ext == ".foam";
+  return ext == ".vtu" || ext == ".msh" || ext == ".foam" || is_foam_case(path);
 }
 
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path, const MeshFields& fields) {
@@ -42,7 +46,7 @@ PolyMesh read_mesh(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".vtu") return read_vtu(path);
   if (ext == ".msh") return read_msh(path);
-  if (ext == ".foam") return read_foam(path);
+  if (ext == ".foam" || is_foam_case(path)) return read_foam(path);
   throw InputError(path.string() + ": unknown mesh format (readable: .vtu .msh, a DIR.foam case)");
 }
 

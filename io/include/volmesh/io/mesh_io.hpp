@@ -30,8 +30,8 @@ struct MeshFields {
 // take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell.
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
                 const MeshFields& fields = {});
-// Reads by extension: .vtu, .msh, or an OpenFOAM case (a directory ending in .foam, or its
-// .foam marker file).
+// Reads by extension: .vtu, .msh, or an OpenFOAM case (a directory ending in .foam or holding
+// constant/polyMesh, or its .foam marker file).
 PolyMesh read_mesh(const std::filesystem::path& path);
 
 bool is_mesh_file(const std::filesystem::path& path);
