@@ -19,5 +19,9 @@ Command add_convert_command(CLI::App& root);
 Command add_check_command(CLI::App& root);
 Command add_demo_command(CLI::App& root);
 Command add_sdf_command(CLI::App& root);
+Command add_mesh_command(CLI::App& root);
+Command add_partition_command(CLI::App& root);
+Command add_solve_command(CLI::App& root);
+Command add_study_command(CLI::App& root);
 
 }  // namespace volmesh::cli

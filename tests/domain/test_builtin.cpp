@@ -11,13 +11,14 @@ namespace {
 
 TEST(Builtin, NamesAndUnknownName) {
   EXPECT_EQ(builtin_domain_names(), (std::vector<std::string>{"ball", "box", "cube-inclusion",
-                                                              "primitives", "thick-sphere"}));
+                                                              "layers6", "primitives",
+                                                              "thick-sphere"}));
   try {
     make_builtin_domain("nope");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "builtin:nope: unknown built-in domain (valid: ball, box, cube-inclusion, "
+              "builtin:nope: unknown built-in domain (valid: ball, box, cube-inclusion, layers6, "
               "primitives, thick-sphere)");
   }
   EXPECT_THROW(builtin_region_volumes("nope"), InputError);

@@ -12,7 +12,8 @@ namespace {
 TEST(ImageLiver, LoadsWithTheHeadersDimsSpacingAndLabels) {
   const std::filesystem::path path =
       std::filesystem::path(VOLMESH_CGAL_DATA) / "images" / "liver.inr.gz";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (install libcgal-demo)";
+  ASSERT_TRUE(std::filesystem::exists(path))
+      << path << " not found (make test installs libcgal-demo)";
   const LabelImage image = read_label_image(path);
   // The header says: XDIM=438 YDIM=353 ZDIM=165, unsigned fixed 8 bits, CPU=decm,
   // VX=0.617188 VY=0.617188 VZ=1.33333 and no TX/TY/TZ.

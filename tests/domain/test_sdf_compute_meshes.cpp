@@ -19,7 +19,8 @@ class SdfComputeMesh : public testing::TestWithParam<Case> {};
 
 TEST_P(SdfComputeMesh, EverySampleMatchesBruteForce) {
   const auto mesh = surface_test::cgal_mesh(GetParam().mesh);
-  if (!mesh) GTEST_SKIP() << GetParam().mesh << " not found (install libcgal-demo)";
+  ASSERT_TRUE(mesh) << GetParam().mesh << " not found in " << VOLMESH_CGAL_DATA
+                    << " (make test installs libcgal-demo)";
   const SignedDistance sd(*mesh, GetParam().mesh);
   // Not a (2^k+1) layout: an odd count that puts no sample on a symmetry plane.
   VoxelGrid grid;

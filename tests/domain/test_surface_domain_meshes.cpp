@@ -16,7 +16,8 @@ class SurfaceDomainMesh : public testing::TestWithParam<const char*> {};
 
 TEST_P(SurfaceDomainMesh, RegionsMatchTheWindingNumber) {
   const auto mesh = cgal_mesh(GetParam());
-  if (!mesh) GTEST_SKIP() << GetParam() << " not found (install libcgal-demo)";
+  ASSERT_TRUE(mesh) << GetParam() << " not found in " << VOLMESH_CGAL_DATA
+                    << " (make test installs libcgal-demo)";
   const SurfaceDomain d({{*mesh}});
   const Box3 box = d.bounds();
   std::mt19937 rng(3);
@@ -35,7 +36,8 @@ TEST_P(SurfaceDomainMesh, RegionsMatchTheWindingNumber) {
 
 TEST_P(SurfaceDomainMesh, PointsOffTheSurfaceBy1e12AreOnTheirSide) {
   const auto mesh = cgal_mesh(GetParam());
-  if (!mesh) GTEST_SKIP() << GetParam() << " not found (install libcgal-demo)";
+  ASSERT_TRUE(mesh) << GetParam() << " not found in " << VOLMESH_CGAL_DATA
+                    << " (make test installs libcgal-demo)";
   const SurfaceDomain d({{*mesh}});
   std::mt19937 rng(5);
   std::uniform_int_distribution<Index> pick(0, mesh->num_triangles() - 1);
@@ -51,7 +53,8 @@ TEST_P(SurfaceDomainMesh, PointsOffTheSurfaceBy1e12AreOnTheirSide) {
 
 TEST_P(SurfaceDomainMesh, CrossingsChainFromEndToEnd) {
   const auto mesh = cgal_mesh(GetParam());
-  if (!mesh) GTEST_SKIP() << GetParam() << " not found (install libcgal-demo)";
+  ASSERT_TRUE(mesh) << GetParam() << " not found in " << VOLMESH_CGAL_DATA
+                    << " (make test installs libcgal-demo)";
   const SurfaceDomain d({{*mesh}});
   const Box3 box = d.bounds();
   std::mt19937 rng(9);

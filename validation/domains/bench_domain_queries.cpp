@@ -66,6 +66,8 @@ int main(int argc, char** argv) {
   };
   const std::vector<Named> domains{
       {"analytic builtin:primitives", [] { return make_builtin_domain("primitives"); }},
+      {"layered builtin:layers6 (10 horizons of 32,768 triangles, 1 fault)",
+       [] { return make_builtin_domain("layers6"); }},
       {"surface elephant.off (5,558 triangles)",
        [&] { return surface_domain(data + "/meshes/elephant.off"); }},
       {"surface armadillo.off (52,000 triangles)",

@@ -1,6 +1,6 @@
 #pragma once
-// One entry per built-in domain; each family of built-ins (analytic solids here, surface
-// based ones later) provides a list, and builtin_registry.cpp joins them.
+// One entry per built-in domain; each family of built-ins (analytic solids, layers) provides
+// a list, and builtin_registry.cpp joins them.
 #include <map>
 #include <memory>
 #include <vector>
@@ -16,5 +16,6 @@ struct BuiltinDomain {
 };
 
 std::vector<BuiltinDomain> analytic_builtin_domains();
+std::vector<BuiltinDomain> layered_builtin_domains();
 
 }  // namespace volmesh

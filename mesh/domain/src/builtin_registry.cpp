@@ -12,6 +12,7 @@ namespace {
 const std::vector<BuiltinDomain>& registry() {
   static const std::vector<BuiltinDomain> all = [] {
     std::vector<BuiltinDomain> list = analytic_builtin_domains();
+    for (BuiltinDomain& d : layered_builtin_domains()) list.push_back(d);
     std::sort(list.begin(), list.end(), [](const BuiltinDomain& a, const BuiltinDomain& b) {
       return std::strcmp(a.name, b.name) < 0;
     });

@@ -1,0 +1,206 @@
+// volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X --domain D --level N)
+//   [--space S] [--exact EXPR --source EXPR --k K] -o out.vtu [--json]
+// One solve, written as a VTU with the solution, its error where an exact solution is known,
+// and the regions.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "solve_setup.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/validity.hpp"
+#include "volmesh/domain/open_domain.hpp"
+#include "volmesh/io/mesh_io.hpp"
+
+namespace volmesh::cli {
+
+namespace {
+
+struct SolveOptions {
+  std::string kind, mesh, method, domain, space, output;
+  int level = -1;
+  bool tets = false, json = false;
+  ProblemSpec problem;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+nlohmann::json errors_json(const std::optional<fem::ErrorNorms>& e) {
+  if (!e) return nullptr;
+  return {{"l2", e->l2}, {"linf", e->linf}, {"h1", e->h1}};
+}
+
+// The mesh and the domain its boundary data refer to.
+struct Input {
+  PolyMesh mesh;
+  std::unique_ptr<Domain> domain;
+  std::string domain_name;
+  double h = 0.0;  // 0 for a mesh read from a file
+};
+
+Input read_input(const SolveOptions& opt) {
+  Input in;
+  if (!opt.mesh.empty()) {
+    in.mesh = read_mesh(opt.mesh);
+    const ValidityReport r = check_validity(in.mesh);
+    if (!r.valid())
+      throw InputError(opt.mesh + ": invalid mesh, not solved (" +
+                       (r.problems.empty() ? std::string("see volmesh check") : r.problems.front()) +
+                       ")");
+    in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
+    in.domain_name = opt.domain.empty() ? opt.mesh : domain_display_name(opt.domain);
+    return in;
+  }
+  const std::string spec = opt.domain.empty() ? default_domain(opt.method) : opt.domain;
+  in.domain = open_domain(spec);
+  in.domain_name = domain_display_name(spec);
+  LevelMesh m = mesh_at_level(opt.method, *in.domain, in.domain_name, opt.level, opt.tets);
+  in.mesh = std::move(m.mesh);
+  in.h = m.h;
+  return in;
+}
+
+int run_solve(const SolveOptions& opt) {
+  const Clock::time_point start = Clock::now();
+  const fem::ProblemKind kind = problem_kind(opt.problem);
+  const bool elasticity = kind == fem::ProblemKind::elasticity;
+  if (elasticity != (opt.kind == "elasticity"))
+    throw InputError("problem " + opt.problem.label() + " is " +
+                     (elasticity ? "an elasticity" : "a Poisson") + " problem: use volmesh solve " +
+                     (elasticity ? "elasticity" : "poisson"));
+
+  const Input in = read_input(opt);
+  const double mesh_seconds = seconds_since(start);
+  const SpaceChoice space = choose_space(opt.space, opt.method, in.mesh);
+  // Progress once the run is long enough to wonder about; a quick run's stderr stays empty.
+  if (mesh_seconds > 1.0)
+    std::cerr << in.mesh.num_cells() << " cells (" << mesh_seconds << " s); solving " << opt.kind
+              << " (" << space.name() << ")\n";
+
+  Index dofs = 0;
+  fem::LinearSolveReport report;
+  std::optional<fem::ErrorNorms> errors;
+  MeshFields fields;
+  std::string warning;
+  if (elasticity) {
+    const fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+    const fem::VectorSolution s = solve_vector(in.mesh, problem, space);
+    dofs = s.dofs, report = s.solve, errors = s.errors;
+    fields = vector_fields(in.mesh, s, problem);
+  } else {
+    const fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+    if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+    const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space);
+    dofs = s.dofs, report = s.solve, errors = s.errors;
+    fields = scalar_fields(in.mesh, s, problem);
+  }
+  const Clock::time_point writing = Clock::now();
+  write_mesh(in.mesh, opt.output, fields);
+  const double write_seconds = seconds_since(writing);
+
+  if (opt.json) {
+    nlohmann::json j{{"problem", opt.problem.label()},
+                     {"kind", opt.kind},
+                     {"domain", in.domain_name},
+                     {"space", space.name()},
+                     {"output", opt.output},
+                     {"cells", in.mesh.num_cells()},
+                     {"points", in.mesh.num_points()},
+                     {"dofs", dofs},
+                     {"unknowns", report.unknowns},
+                     {"linear_solver", report.method},
+                     {"iterations", report.iterations},
+                     {"residual", report.residual},
+                     {"errors", errors_json(errors)},
+                     {"seconds",
+                      {{"mesh", mesh_seconds},
+                       {"assembly", report.assembly_seconds},
+                       {"solve", report.solve_seconds},
+                       {"write", write_seconds},
+                       {"total", seconds_since(start)}}}};
+    if (!opt.method.empty()) j["method"] = opt.method, j["level"] = opt.level, j["h"] = in.h;
+    if (!warning.empty()) j["warning"] = warning;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << opt.output << ": " << opt.problem.label() << " on " << in.domain_name << ", "
+            << in.mesh.num_cells() << " cells, " << dofs << " DOFs (" << space.name() << "); "
+            << report.method << ", " << report.iterations << " iterations, residual "
+            << report.residual << "; " << seconds_since(start) << " s\n";
+  if (errors)
+    std::cout << "errors: L2 " << errors->l2 << ", Linf " << errors->linf << ", H1 " << errors->h1
+              << "\n";
+  return 0;
+}
+
+}  // namespace
+
+Command add_solve_command(CLI::App& root) {
+  auto opt = std::make_shared<SolveOptions>();
+  CLI::App* app = root.add_subcommand(
+      "solve", "Solve Poisson or linear elasticity on a mesh, or on a domain meshed by a method");
+  app->add_option("kind", opt->kind, "poisson or elasticity")
+      ->required()
+      ->check(CLI::IsMember({"poisson", "elasticity"}));
+  CLI::Option* problem = app->add_option("--problem", opt->problem.name,
+                                         "named problem (" + [] {
+                                           std::string names;
+                                           for (const std::string& n : fem::problem_names())
+                                             names += (names.empty() ? "" : ", ") + n;
+                                           return names;
+                                         }() + ")");
+  CLI::Option* exact = app->add_option("--exact", opt->problem.exact,
+                                       "exact solution u(x, y, z), a muparser expression");
+  CLI::Option* source = app->add_option(
+      "--source", opt->problem.source, "source f(x, y, z); default −kΔu of --exact");
+  app->add_option("--k", opt->problem.k, "conductivity of every region with --exact/--source")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  exact->excludes(problem);
+  source->excludes(problem);
+  CLI::Option* mesh = app->add_option("--mesh", opt->mesh, "mesh to solve on (.vtu .msh DIR.foam)");
+  CLI::Option* method = app->add_option("--method", opt->method, "mesh the domain: staircase, cutcell, grid")
+                            ->check(CLI::IsMember(study_methods()));
+  CLI::Option* level = app->add_option("--level", opt->level, "octree depth, the same inside as at the boundary, as in a study (grid: 2^level "
+                                          "cells per side)")
+                           ->check(CLI::Range(0, 20));
+  app->add_option("--domain", opt->domain,
+                  "domain (builtin:NAME, surface, image, .json); with --mesh: the true boundary "
+                  "the boundary data are evaluated on (default: the mesh's own boundary)");
+  app->add_flag("--tets", opt->tets, "grid: the Kuhn split into tetrahedra");
+  app->add_option("--space", opt->space,
+                  "p1, p2, q1, polyhedral, or fv (default: polyhedral for octree methods, p1 "
+                  "for tets, q1 for hexes)");
+  app->add_option("-o,--output", opt->output, "output mesh with the solution (.vtu)")
+      ->required()
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            return std::filesystem::path(s).extension() == ".vtu" ? std::string()
+                                                                  : "must end in .vtu";
+          },
+          "FILE.vtu"));
+  app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  mesh->excludes(method);
+  method->needs(level);
+  level->needs(method);
+  app->footer(
+      "Examples:\n"
+      "  volmesh solve poisson --problem sine --method staircase --domain builtin:ball "
+      "--level 4 -o ball.vtu\n"
+      "  volmesh solve poisson --mesh part.vtu --exact \"sin(x)*exp(y*z)\" -o u.vtu --json\n"
+      "  volmesh solve elasticity --problem elastic-patch --method grid --level 3 -o patch.vtu");
+  app->callback([app, mesh, method] {
+    if (mesh->count() == 0 && method->count() == 0)
+      throw CLI::ValidationError("--mesh or --method", "give a mesh (--mesh M) or a method "
+                                                       "(--method X --domain D --level N)");
+  });
+  return {app, [opt] { return run_solve(*opt); }};
+}
+
+}  // namespace volmesh::cli

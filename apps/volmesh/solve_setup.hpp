@@ -1,0 +1,81 @@
+#pragma once
+// What `solve`, `study` and `demo` share: a domain meshed by a method at a level, the space a
+// mesh is solved in, the problem (named, or given as expressions) and the solve itself.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/domain/domain.hpp"
+#include "volmesh/fem/fem.hpp"
+#include "volmesh/fem/problems.hpp"
+#include "volmesh/io/mesh_io.hpp"
+
+namespace volmesh::cli {
+
+// The methods `solve --method` and `study` mesh with: "staircase" and "cutcell" (octree
+// depth `level` at the boundaries and interfaces, h = root edge / 2^level; `uniform`: the
+// same depth inside too, as a study needs — a coarser interior would stop the rate), "grid"
+// (2^level Cartesian hexes per side of a box, or with `tets` their Kuhn split).
+struct LevelMesh {
+  PolyMesh mesh;
+  double h = 0.0;
+};
+const std::vector<std::string>& study_methods();
+// Throws InputError for an unknown method, and for `tets` with an octree method.
+LevelMesh mesh_at_level(const std::string& method, const Domain& domain,
+                        const std::string& domain_name, int level, bool tets,
+                        bool uniform = true);
+// builtin:box for grids, builtin:ball otherwise.
+std::string default_domain(const std::string& method);
+
+// A finite-element space or the cell-centred finite volumes ("fv", Poisson only).
+struct SpaceChoice {
+  std::optional<fem::Space> fe;  // empty: finite volumes
+  std::string name() const { return fe ? fem::space_name(*fe) : "fv"; }
+};
+// `requested` empty: polyhedral for octree methods (or a mesh with other cells), p1 for a
+// mesh of tets, q1 for a mesh of hexes. Throws InputError for an unknown name.
+SpaceChoice choose_space(const std::string& requested, const std::string& method,
+                         const PolyMesh& mesh);
+
+// --problem NAME, or a user's case from --exact/--source/--k (Poisson only).
+struct ProblemSpec {
+  std::string name;          // empty when expressions are given
+  std::string exact, source;
+  double k = 1.0;
+  bool user() const { return name.empty(); }
+  std::string label() const { return user() ? std::string("user expressions") : name; }
+};
+// Refuses a spec with both a name and expressions, or neither (InputError).
+fem::ProblemKind problem_kind(const ProblemSpec& spec);
+
+// The problem on a mesh of `domain` (its boundary tags get conditions). `warning` receives
+// the user problem's source check, if any.
+fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domain,
+                                    const PolyMesh& mesh, std::string* warning = nullptr);
+fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
+                                          const PolyMesh& mesh);
+
+fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
+                                 const SpaceChoice& space);
+// Throws InputError for finite volumes (Poisson only).
+fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProblem& problem,
+                                 const SpaceChoice& space);
+
+// What a VTU shows of a solution. Poisson: point data "u" (cell data for finite volumes,
+// whose unknowns live in the cells) and "error" = u_h − u where the problem has an exact
+// solution. Elasticity: point data "displacement" and "error" (3 components), cell data
+// "von_mises". The writer adds the cell "region".
+MeshFields scalar_fields(const PolyMesh& mesh, const fem::ScalarSolution& solution,
+                         const fem::PoissonProblem& problem);
+MeshFields vector_fields(const PolyMesh& mesh, const fem::VectorSolution& solution,
+                         const fem::ElasticityProblem& problem);
+
+// A mesh read from a file taken as its own domain: its boundary is the true boundary and
+// its regions are the mesh's (for `solve --mesh M` without --domain). Throws InputError
+// when the boundary is not a closed surface.
+std::unique_ptr<Domain> mesh_as_domain(const PolyMesh& mesh, const std::string& name);
+
+}  // namespace volmesh::cli

@@ -1,0 +1,196 @@
+#include "study_run.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <regex>
+
+#include "volmesh/core/errors.hpp"
+#include "volmesh/domain/open_domain.hpp"
+
+namespace volmesh::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Through a temporary name in the same directory, renamed at the end: a failed write leaves
+// no partial file.
+void write_file_atomically(const fs::path& path, const char* data, std::size_t size) {
+  const fs::path temporary =
+      path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path.string() + ": cannot open for writing");
+    out.write(data, static_cast<std::streamsize>(size));
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(temporary, ec);
+      throw InputError(path.string() + ": cannot write");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw InputError(path.string() + ": cannot write (" + ec.message() + ")");
+  }
+}
+
+std::string series_label(const std::string& method, bool tets, const SpaceChoice& space) {
+  return (method == "grid" && tets ? std::string("grid tets") : method) + " (" + space.name() + ")";
+}
+
+fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
+                            const PolyMesh& mesh, const SpaceChoice& space) {
+  fem::LevelSolve out;
+  if (kind == fem::ProblemKind::elasticity) {
+    const fem::VectorSolution s =
+        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space);
+    out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
+  } else {
+    const fem::ScalarSolution s = solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space);
+    out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
+  }
+  return out;
+}
+
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; }
+
+}  // namespace
+
+std::pair<int, int> parse_levels(const std::string& text) {
+  static const std::regex range(R"((\d{1,2})(?:\.\.(\d{1,2}))?)");
+  std::smatch m;
+  if (!std::regex_match(text, m, range))
+    throw InputError("--levels " + text + ": expected A..B, e.g. 2..5");
+  const int first = std::stoi(m[1].str());
+  const int last = m[2].matched ? std::stoi(m[2].str()) : first;
+  if (first > last)
+    throw InputError("--levels " + text + ": the first level exceeds the last");
+  return {first, last};
+}
+
+StudyOutcome run_study(const StudySpec& spec, const fem::StudyProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  if (spec.first_level > spec.last_level)
+    throw InputError("levels " + std::to_string(spec.first_level) + ".." +
+                     std::to_string(spec.last_level) + ": the first level exceeds the last");
+  const fem::ProblemKind kind = problem_kind(spec.problem);
+  if (spec.problem.user() && spec.problem.exact.empty())
+    throw InputError("--source without --exact: a study needs the exact solution");
+  const std::string domain_spec =
+      spec.domain.empty() ? default_domain(spec.methods.front()) : spec.domain;
+  const std::unique_ptr<Domain> domain = open_domain(domain_spec);
+  StudyOutcome outcome;
+  outcome.problem = spec.problem.label();
+  outcome.domain = domain_display_name(domain_spec);
+  for (const std::string& method : spec.methods) {
+    // The space follows from the first level's mesh; every level has the same cell kinds.
+    std::optional<SpaceChoice> space;
+    const fem::MeshAtLevel mesh = [&](int level) {
+      LevelMesh m = mesh_at_level(method, *domain, outcome.domain, level, spec.tets);
+      if (!space) space = choose_space(spec.space, method, m.mesh);
+      return fem::StudyMesh{std::move(m.mesh), m.h};
+    };
+    const fem::SolveOnMesh solve = [&](const PolyMesh& m) {
+      return solve_level(spec, kind, *domain, m, *space);
+    };
+    // The label names the space, known once the first mesh exists.
+    fem::ConvergenceSeries s = fem::run_convergence_study(
+        method, spec.first_level, spec.last_level, mesh, solve, progress);
+    s.label = series_label(method, spec.tets, *space);
+    outcome.methods.push_back(method);
+    outcome.spaces.push_back(space->name());
+    outcome.series.push_back(std::move(s));
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+plot::LogLogChart study_chart(const StudyOutcome& outcome) {
+  plot::LogLogChart chart;
+  chart.title = outcome.problem + " on " + outcome.domain + ": error against h";
+  chart.x_label = "h (cell edge)";
+  chart.y_label = "error";
+  chart.reference_slopes = {1.0, 2.0};
+  const bool several = outcome.series.size() > 1;
+  for (std::size_t m = 0; m < outcome.series.size(); ++m) {
+    const fem::ConvergenceSeries& s = outcome.series[m];
+    for (std::size_t k = 0; k < fem::kNorms.size(); ++k) {
+      plot::Series line;
+      line.label = (several ? s.label + " " : std::string()) + fem::norm_name(fem::kNorms[k]);
+      bool any = false;
+      for (const fem::LevelResult& r : s.levels) {
+        line.x.push_back(r.h);
+        line.y.push_back(fem::norm_value(r.errors, fem::kNorms[k]));
+        any = any || std::isfinite(line.y.back());
+      }
+      if (!any) continue;  // e.g. no H1 error without the exact gradient
+      line.colour = static_cast<int>(several ? m : k);
+      line.marker = static_cast<int>(k);
+      chart.series.push_back(std::move(line));
+    }
+  }
+  return chart;
+}
+
+nlohmann::json study_summary(const StudyOutcome& outcome) {
+  nlohmann::json series = nlohmann::json::array();
+  for (std::size_t m = 0; m < outcome.series.size(); ++m) {
+    const fem::ConvergenceSeries& s = outcome.series[m];
+    const fem::SeriesRates rates = fem::convergence_rates(s);
+    nlohmann::json levels = nlohmann::json::array(), slopes, pairwise;
+    for (const fem::LevelResult& r : s.levels)
+      levels.push_back({{"level", r.level},
+                        {"h", r.h},
+                        {"cells", r.cells},
+                        {"dofs", r.dofs},
+                        {"l2", finite_or_null(r.errors.l2)},
+                        {"linf", finite_or_null(r.errors.linf)},
+                        {"h1", finite_or_null(r.errors.h1)},
+                        {"linear_solver", r.solve.method},
+                        {"iterations", r.solve.iterations},
+                        {"residual", r.solve.residual},
+                        {"seconds",
+                         {{"mesh", r.mesh_seconds},
+                          {"assembly", r.solve.assembly_seconds},
+                          {"solve", r.solve.solve_seconds}}}});
+    for (std::size_t k = 0; k < fem::kNorms.size(); ++k) {
+      const std::string name = fem::norm_name(fem::kNorms[k]);
+      slopes[name] = finite_or_null(rates.slope[k]);
+      pairwise[name] = nlohmann::json::array();
+      for (double r : rates.pairwise[k]) pairwise[name].push_back(finite_or_null(r));
+    }
+    series.push_back({{"label", s.label},
+                      {"method", outcome.methods[m]},
+                      {"space", outcome.spaces[m]},
+                      {"levels", levels},
+                      {"slope", slopes},
+                      {"pairwise_rates", pairwise}});
+  }
+  return {{"problem", outcome.problem},
+          {"domain", outcome.domain},
+          {"series", series},
+          {"seconds", outcome.seconds}};
+}
+
+void write_study_outputs(const fs::path& dir, const StudyOutcome& outcome) {
+  // Everything is made before the first byte is written.
+  const std::string csv = fem::convergence_csv(outcome.series);
+  const std::vector<std::uint8_t> png = plot::render_loglog_png(study_chart(outcome));
+  const std::string json = study_summary(outcome).dump(2) + "\n";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(dir.string() + ": cannot create the output directory");
+  write_file_atomically(dir / "convergence.csv", csv.data(), csv.size());
+  write_file_atomically(dir / "convergence.png", reinterpret_cast<const char*>(png.data()),
+                        png.size());
+  write_file_atomically(dir / "summary.json", json.data(), json.size());
+}
+
+}  // namespace volmesh::cli

@@ -1,0 +1,80 @@
+// Mapping mesh boundary points onto the true boundary of a domain.
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "problem_closest_shapes.hpp"
+#include "volmesh/domain/analytic.hpp"
+#include "volmesh/fem/problems.hpp"
+
+namespace volmesh::fem {
+namespace {
+
+bool separates_from_outside(const Crossing& c) {
+  return c.before != c.after && (c.before == 0 || c.after == 0);
+}
+
+// The outer-boundary crossing nearest to p on the line p ± reach·n.
+std::optional<Crossing> nearest_outer_crossing(const Domain& domain, const Vec3& p,
+                                               const Vec3& n, double reach) {
+  std::optional<Crossing> best;
+  for (const Crossing& c : domain.crossings(p - reach * n, p + reach * n))
+    if (separates_from_outside(c) && (!best || std::abs(c.t - 0.5) < std::abs(best->t - 0.5)))
+      best = c;
+  return best;
+}
+
+// Whether a point of a primitive's surface lies on the outer boundary: the region is 0 on
+// exactly one side of it.
+bool on_outer_boundary(const Domain& domain, const Vec3& q, const Vec3& normal, double step) {
+  return (domain.region(q + step * normal) == 0) != (domain.region(q - step * normal) == 0);
+}
+
+Vec3 closest_on_analytic(const AnalyticDomain& domain, const Vec3& p, double step) {
+  std::optional<Vec3> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const Primitive& prim : domain.primitives()) {
+    const SurfacePoint s = closest_surface_point(prim, p);
+    const double d = (s.point - p).squaredNorm();
+    if (d < best_distance && on_outer_boundary(domain, s.point, s.normal, step)) {
+      best = s.point;
+      best_distance = d;
+    }
+  }
+  return best ? *best : project_along_normals(domain, p);
+}
+
+}  // namespace
+
+Vec3 project_along_normals(const Domain& domain, const Vec3& p) {
+  const double size = domain.bounds().size().norm();
+  Vec3 n = domain.normal(p);
+  std::optional<Vec3> q;
+  double reach = 0.01 * size;
+  for (int step = 0; step < 50;) {
+    const std::optional<Crossing> c = nearest_outer_crossing(domain, p, n, reach);
+    if (!c) {
+      if (reach > size) break;
+      reach *= 4.0;
+      continue;
+    }
+    const bool settled = q && (c->point - *q).norm() <= 1e-14 * size;
+    q = c->point;
+    n = c->normal;
+    if (settled) break;
+    reach = 2.0 * (*q - p).norm() + 1e-9 * size;
+    ++step;
+  }
+  return q ? *q : p;
+}
+
+PointMap true_boundary_map(const Domain& domain) {
+  const Domain* d = &domain;
+  if (const auto* analytic = dynamic_cast<const AnalyticDomain*>(d)) {
+    const double step = 1e-9 * domain.bounds().size().norm();
+    return [analytic, step](const Vec3& p) { return closest_on_analytic(*analytic, p, step); };
+  }
+  return [d](const Vec3& p) { return project_along_normals(*d, p); };
+}
+
+}  // namespace volmesh::fem

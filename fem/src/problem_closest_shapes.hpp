@@ -1,0 +1,16 @@
+#pragma once
+// The closest surface point of one analytic primitive (analytic.hpp), exact up to rounding.
+#include "volmesh/domain/analytic.hpp"
+
+namespace volmesh::fem {
+
+// The closest point of prim's surface to p, and the unit outward normal there, both in world
+// coordinates. A point with several closest points (a sphere's centre, a torus axis point)
+// gets one of them.
+struct SurfacePoint {
+  Vec3 point;
+  Vec3 normal;
+};
+SurfacePoint closest_surface_point(const Primitive& prim, const Vec3& p);
+
+}  // namespace volmesh::fem

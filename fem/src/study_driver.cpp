@@ -1,0 +1,40 @@
+#include <chrono>
+
+#include "volmesh/core/errors.hpp"
+#include "volmesh/fem/study.hpp"
+
+namespace volmesh::fem {
+
+ConvergenceSeries run_convergence_study(const std::string& label, int first_level,
+                                        int last_level, const MeshAtLevel& mesh_at_level,
+                                        const SolveOnMesh& solve_on_mesh,
+                                        const StudyProgress& progress) {
+  if (first_level > last_level)
+    throw InputError("levels " + std::to_string(first_level) + ".." +
+                     std::to_string(last_level) + ": the first level exceeds the last");
+  ConvergenceSeries series{label, {}};
+  for (int level = first_level; level <= last_level; ++level) {
+    LevelResult r;
+    r.level = level;
+    if (progress) progress(label + ": level " + std::to_string(level) + ": meshing");
+    const auto start = std::chrono::steady_clock::now();
+    StudyMesh m = mesh_at_level(level);
+    r.mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.h = m.h;
+    r.cells = m.mesh.num_cells();
+    if (progress)
+      progress(label + ": level " + std::to_string(level) + ": " + std::to_string(r.cells) +
+               " cells, solving");
+    LevelSolve s = solve_on_mesh(m.mesh);
+    if (!s.errors)
+      throw InputError(label + ": level " + std::to_string(level) +
+                       ": the problem has no exact solution to measure errors against");
+    r.dofs = s.dofs;
+    r.solve = s.solve;
+    r.errors = *s.errors;
+    series.levels.push_back(r);
+  }
+  return series;
+}
+
+}  // namespace volmesh::fem

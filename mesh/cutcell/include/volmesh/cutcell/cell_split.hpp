@@ -1,0 +1,115 @@
+#pragma once
+// M3C on one cell (the octree paper, §3.2-3.3 and Algorithm 5): the face contours joined
+// into closed components per pair of regions, a cell interface point where more than two
+// face interface points occur, the components triangulated, and the cell split into one
+// polyhedral piece per connected part of each region.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "volmesh/cutcell/loop_triangulation.hpp"
+#include "volmesh/cutcell/tangent_point.hpp"
+
+namespace volmesh::cutcell {
+
+enum class CellPointKind : std::uint8_t { grid, edge, face_feature, face_interface };
+
+struct CellPoint {
+  Vec3 position = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();  // edge interface points: unit, from the lower into the higher
+                               // label of the two regions the point separates; zero when
+                               // unknown (left out of the least-squares fits)
+  std::uint8_t faces = 0;      // bit k: the point lies on cell face k (x-, x+, y-, y+, z-, z+)
+  CellPointKind kind = CellPointKind::grid;
+  bool junction = false;  // an edge point on which a face interface point landed
+  bool is_face_interface() const { return kind == CellPointKind::face_interface || junction; }
+};
+
+// A polygon of the cell's boundary, one region, oriented outward.
+struct CellPolygon {
+  Index region = 0;
+  std::vector<int> points;
+};
+
+// A contour segment on the cell's boundary; left and right are seen from outside the cell.
+struct CellSegment {
+  int a = 0, b = 0;
+  Index left = 0, right = 0;
+  int left_polygon = -1, right_polygon = -1;
+};
+
+struct CellInput {
+  std::array<Vec3, 8> corners;  // corner k at offset (k & 1, k >> 1 & 1, k >> 2 & 1)
+  std::vector<CellPoint> points;
+  std::vector<CellPolygon> polygons;
+  std::vector<CellSegment> segments;
+};
+
+struct CellOptions {
+  // false: M3C as published: the cell interface point at the cell centre, no feature points.
+  bool exact_points = true;
+  FeatureThresholds feature;
+  // Points made inside the cell keep margin * size away from its faces. A least-squares
+  // cell interface point found outside by less than reach * size is pushed in (a junction
+  // next to a face), farther out the centroid of the face interface points is used; a
+  // feature point farther out than feature_reach * size is not the cell's.
+  double margin = 0.01;
+  double reach = 0.25;
+  double feature_reach = 0.1;
+  // A feature point within snap * size of a face point of its component (the feature runs
+  // along the face) is that face point.
+  double snap = 0.15;
+  // Components without feature or cell point and with at least this many points are fanned
+  // around their least-squares surface point; smaller ones use divide and conquer.
+  int fan_points = 5;
+  // Two triangles of a component whose points lie within flat * size of each other's plane
+  // may swap their diagonal (the surface stays put) when that lowers their skewness.
+  double flat = 1e-6;
+};
+
+enum class LoopMethod : std::uint8_t {
+  divide_and_conquer,
+  feature_fan,    // around the EMC feature point of the component
+  feature_split,  // along a sharp edge between the CMS feature points of two faces
+  interface_fan,  // around the cell interface point
+  surface_fan,    // around the least-squares surface point of a large component
+  across_faces,   // §4.1's construction
+  centroid_fan,   // around the centroid of the component's points
+  degenerate,     // two points: a face segment that is also the link, no triangle
+};
+
+struct CellPiece {
+  Index region = 0;
+  std::vector<int> polygons;  // input polygons bounding it
+};
+
+// A triangle of the interface between two pieces (point indices as in CellInput, the new
+// points after them); its right-hand normal points out of the piece of the higher region.
+struct PieceTriangle {
+  Triangle points{};
+  int lower = -1, higher = -1;  // pieces
+  int loop = -1;                // the component it triangulates (CellSplit::loops)
+};
+
+struct CellSplit {
+  std::vector<Vec3> new_points;  // index points.size() + k: cell interface and feature points
+  std::vector<CellPiece> pieces;
+  std::vector<PieceTriangle> triangles;
+  std::vector<int> polygon_piece;  // the piece of each input polygon
+  std::vector<LoopMethod> loops;   // how each component was triangulated
+  bool cell_point_left_cell = false;  // the least-squares cell point fell outside; centroid used
+};
+
+// Throws std::logic_error when the contour does not close (inconsistent input).
+CellSplit split_cell(const CellInput& cell, const CellOptions& options = {});
+
+// Distance of p inside the hexahedron with these corners (negative outside), measured from
+// the planes of its faces (through their centres, along their mean normals).
+double depth_inside_cell(const std::array<Vec3, 8>& corners, const Vec3& p);
+// p pushed inside until it lies `margin` from every face plane; nullopt when it lies farther
+// than `reach` outside.
+std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, double margin,
+                                    double reach);
+
+}  // namespace volmesh::cutcell

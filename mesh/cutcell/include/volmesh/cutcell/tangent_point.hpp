@@ -1,0 +1,39 @@
+#pragma once
+// Points from interface points s_i and their unit normals n_i: the least-squares intersection
+// of the tangent planes, system (2) of the octree paper,
+//   [..., n_i, ...]^T p = [..., n_i . s_i, ...],
+// solved through the SVD pseudo-inverse relative to the mass point of the s_i, so that a
+// direction the normals do not constrain leaves p at the mass point (EMC, Kobbelt et al.).
+// In a face, the normals projected on the face plane give the intersection of the tangent
+// lines; it stays in the plane of the s_i.
+#include <optional>
+#include <span>
+
+#include "volmesh/core/types.hpp"
+
+namespace volmesh::cutcell {
+
+// Singular values below `relative_cutoff` times the largest are dropped, and at most
+// `max_rank` are kept (EMC truncates to rank 2 along a sharp edge).
+Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
+                          int max_rank = 3, double relative_cutoff = 0.1);
+// The same relative to `origin` instead of the mass point: unconstrained directions keep
+// origin's coordinates.
+Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
+                          const Vec3& origin, int max_rank = 3, double relative_cutoff = 0.1);
+
+// The Kobbelt/EMC feature test on one contour component: theta = min n_i . n_j; a sharp
+// feature when theta < theta_s. With n* = n0 x n1 for the pair of least dot product,
+// phi = max |n_i . n*| > phi_s makes it a corner (rank 3), otherwise an edge (rank 2).
+struct FeatureThresholds {
+  double theta = 0.9;
+  double phi = 0.7;
+};
+struct Feature {
+  Vec3 point;
+  bool corner;
+};
+std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                     const FeatureThresholds& thresholds = {});
+
+}  // namespace volmesh::cutcell

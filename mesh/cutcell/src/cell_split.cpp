@@ -1,0 +1,515 @@
+#include "volmesh/cutcell/cell_split.hpp"
+
+#include "volmesh/core/geometry.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+namespace volmesh::cutcell {
+namespace {
+
+// Corners of cell face k (axis k / 2, side k % 2) in a cyclic order.
+std::array<int, 4> face_corners(int k) {
+  const int axis = k / 2, side = k % 2;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  std::array<int, 4> out{};
+  const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i = 0; i < 4; ++i) out[i] = side << axis | uv[i][0] << u | uv[i][1] << v;
+  return out;
+}
+
+double cell_size(const std::array<Vec3, 8>& corners) { return (corners[7] - corners[0]).norm() / std::sqrt(3.0); }
+
+std::pair<int, int> edge_key(int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; }
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+struct Loop {
+  std::vector<int> points;
+  std::vector<int> segments;  // surface segments, normalised (lower label on the left)
+  Index lower = 0, higher = 0;
+  bool through_cell_point = false;
+};
+
+class Splitter {
+ public:
+  Splitter(const CellInput& in, const CellOptions& options) : in_(in), options_(options) {
+    for (const CellPoint& p : in.points) {
+      position_.push_back(p.position);
+      faces_.push_back(p.faces);
+    }
+    size_ = cell_size(in.corners);
+  }
+  CellSplit run();
+
+ private:
+  int add_point(const Vec3& p) {
+    out_.new_points.push_back(p);
+    position_.push_back(p);
+    faces_.push_back(0);
+    return static_cast<int>(position_.size()) - 1;
+  }
+  std::optional<Vec3> clamp(const Vec3& p, double reach) const {
+    return clamp_into_cell(in_.corners, p, options_.margin * size_, reach * size_);
+  }
+  void build_loops();
+  int cell_point(const std::vector<int>& face_points);
+  std::vector<Triangle> triangulate(const Loop& loop, LoopMethod& method);
+  // The edge points of a loop with known normals.
+  std::pair<std::vector<Vec3>, std::vector<Vec3>> fitted_points(const std::vector<int>& loop) const;
+  std::optional<std::vector<Triangle>> split_along_feature(const std::vector<int>& loop);
+  std::vector<Triangle> triangulate_smooth(const std::vector<int>& loop, LoopMethod& method);
+  int face_point_near(const Loop& loop, const Vec3& p) const;
+  void build_pieces();
+  // The pieces on the lower and the higher label's side of a component.
+  std::pair<int, int> loop_pieces(const Loop& loop) const {
+    const CellSegment& s = segments_[loop.segments[0]];
+    return {out_.polygon_piece[s.left_polygon], out_.polygon_piece[s.right_polygon]};
+  }
+  std::vector<Vec3> piece_centres(const std::vector<std::vector<Triangle>>& triangles) const;
+  double skewness(const Triangle& t, const Vec3& owner, const Vec3& neighbour, bool outside) const;
+  void flip_slivers(std::vector<std::vector<Triangle>>& triangles);
+  void emit_triangles(const std::vector<std::vector<Triangle>>& triangles);
+
+  const CellInput& in_;
+  const CellOptions& options_;
+  double size_;
+  std::vector<Vec3> position_;
+  std::vector<std::uint8_t> faces_;
+  std::vector<CellSegment> segments_;  // normalised
+  std::vector<Loop> loops_;
+  CellSplit out_;
+};
+
+int Splitter::cell_point(const std::vector<int>& face_points) {
+  Vec3 p;
+  if (options_.exact_points) {
+    std::vector<Vec3> s, n;
+    for (const CellPoint& q : in_.points)
+      if (q.kind == CellPointKind::edge && !q.normal.isZero()) {
+        s.push_back(q.position);
+        n.push_back(q.normal);
+      }
+    if (const auto q = clamp(tangent_intersection(s, n, 3), options_.reach)) {
+      p = *q;
+    } else {
+      out_.cell_point_left_cell = true;
+      p = Vec3::Zero();
+      for (int f : face_points) p += position_[f] / static_cast<double>(face_points.size());
+    }
+  } else {
+    p = Vec3::Zero();
+    for (const Vec3& c : in_.corners) p += c / 8.0;
+  }
+  return add_point(p);
+}
+
+// Components per pair of regions: cycles of surface segments, and paths between face
+// interface points closed through the link between two of them or through the cell point.
+void Splitter::build_loops() {
+  for (CellSegment s : in_.segments) {
+    if (s.left > s.right) {
+      std::swap(s.a, s.b);
+      std::swap(s.left, s.right);
+      std::swap(s.left_polygon, s.right_polygon);
+    }
+    segments_.push_back(s);
+  }
+  std::vector<int> face_points;
+  for (int i = 0; i < static_cast<int>(in_.points.size()); ++i)
+    if (in_.points[i].is_face_interface()) face_points.push_back(i);
+  const int nif = static_cast<int>(face_points.size());
+  int centre = -1;
+  if (nif > 2) centre = cell_point(face_points);
+
+  // Segments by (pair, start point), sorted for lookup.
+  using Key = std::tuple<Index, Index, int>;
+  std::map<Key, int> from;
+  std::map<Key, int> into;
+  for (int i = 0; i < static_cast<int>(segments_.size()); ++i) {
+    const CellSegment& s = segments_[i];
+    if (!from.emplace(Key{s.left, s.right, s.a}, i).second ||
+        !into.emplace(Key{s.left, s.right, s.b}, i).second)
+      throw std::logic_error("split_cell: two contour segments of one pair leave one point");
+  }
+  std::vector<char> used(segments_.size(), 0);
+  const auto walk = [&](int first, Loop& loop) {
+    int i = first;
+    while (true) {
+      used[i] = 1;
+      const CellSegment& s = segments_[i];
+      loop.points.push_back(s.a);
+      loop.segments.push_back(i);
+      const auto next = from.find(Key{s.left, s.right, s.b});
+      if (next == from.end()) return s.b;  // an open end
+      if (next->second == first) return -1;
+      i = next->second;
+    }
+  };
+  // Paths first: they start at a point no segment of the pair enters.
+  for (int i = 0; i < static_cast<int>(segments_.size()); ++i) {
+    const CellSegment& s = segments_[i];
+    if (used[i] || into.count(Key{s.left, s.right, s.a})) continue;
+    Loop loop{{}, {}, s.left, s.right, false};
+    const int end = walk(i, loop);
+    if (end < 0 || nif < 2 || !in_.points[s.a].is_face_interface() ||
+        !in_.points[end].is_face_interface() || end == s.a)
+      throw std::logic_error("split_cell: a contour component does not close");
+    loop.points.push_back(end);
+    if (centre >= 0) {
+      loop.points.push_back(centre);
+      loop.through_cell_point = true;
+    }
+    loops_.push_back(std::move(loop));
+  }
+  for (int i = 0; i < static_cast<int>(segments_.size()); ++i) {
+    if (used[i]) continue;
+    Loop loop{{}, {}, segments_[i].left, segments_[i].right, false};
+    if (walk(i, loop) >= 0) throw std::logic_error("split_cell: a contour component does not close");
+    loops_.push_back(std::move(loop));
+  }
+}
+
+std::pair<std::vector<Vec3>, std::vector<Vec3>> Splitter::fitted_points(const std::vector<int>& loop) const {
+  std::pair<std::vector<Vec3>, std::vector<Vec3>> out;
+  for (int p : loop)
+    if (p < static_cast<int>(in_.points.size()) && in_.points[p].kind == CellPointKind::edge &&
+        !in_.points[p].normal.isZero()) {
+      out.first.push_back(in_.points[p].position);
+      out.second.push_back(in_.points[p].normal);
+    }
+  return out;
+}
+
+// A face point of the loop within snap * size of p that can be a fan centre (no fan
+// triangle would lie in a cell face), or -1.
+int Splitter::face_point_near(const Loop& loop, const Vec3& p) const {
+  const int n = static_cast<int>(loop.points.size());
+  for (int k = 0; k < n; ++k) {
+    const int c = loop.points[k];
+    if (c >= static_cast<int>(in_.points.size()) || in_.points[c].kind == CellPointKind::edge ||
+        in_.points[c].kind == CellPointKind::grid || (position_[c] - p).norm() > options_.snap * size_)
+      continue;
+    bool ok = true;
+    for (int j = 0; j < n && ok; ++j)
+      if (j != k && j != (k + 1) % n && j != (k + n - 1) % n) ok = (faces_[loop.points[j]] & faces_[c]) == 0;
+    if (ok) return c;
+  }
+  return -1;
+}
+
+std::vector<Triangle> Splitter::triangulate(const Loop& loop, LoopMethod& method) {
+  if (loop.points.size() < 3) {
+    // A path joining the two face interface points along a face: the link between them is
+    // that segment (the paper's Fig. 10b), the component encloses nothing.
+    method = LoopMethod::degenerate;
+    return {};
+  }
+  if (loop.through_cell_point) {
+    method = LoopMethod::interface_fan;
+    return triangulate_fan(loop.points, loop.points.back());
+  }
+  if (options_.exact_points) {
+    const auto [s, n] = fitted_points(loop.points);
+    if (s.size() >= 2)
+      if (const auto feature = sharp_feature(s, n, options_.feature)) {
+        if (!feature->corner)
+          if (auto t = split_along_feature(loop.points)) {
+            method = LoopMethod::feature_split;
+            return std::move(*t);
+          }
+        // Where the feature runs along a cell face, the face's own point on it (CMS feature
+        // point or interface point) is the fan centre: a point beside it would make slivers.
+        if (const int on_face = face_point_near(loop, feature->point); on_face >= 0) {
+          method = LoopMethod::feature_fan;
+          return triangulate_fan(loop.points, on_face);
+        }
+        if (const auto p = clamp(feature->point, options_.feature_reach)) {
+          method = LoopMethod::feature_fan;
+          return triangulate_fan(loop.points, add_point(*p));
+        }
+      }
+  }
+  return triangulate_smooth(loop.points, method);
+}
+
+// A sharp edge crossing the cell enters and leaves it through two faces, at their CMS feature
+// points: the segment between them is the edge (exact when straight, O(h^2) off a curved one).
+// The component is split along it and each flat side triangulated on its own.
+std::optional<std::vector<Triangle>> Splitter::split_along_feature(const std::vector<int>& loop) {
+  const int n = static_cast<int>(loop.size());
+  std::vector<int> at;
+  for (int k = 0; k < n; ++k)
+    if (loop[k] < static_cast<int>(in_.points.size()) && in_.points[loop[k]].kind == CellPointKind::face_feature)
+      at.push_back(k);
+  if (at.size() != 2) return std::nullopt;
+  const int k1 = at[0], k2 = at[1];
+  if (k2 - k1 < 2 || n - (k2 - k1) < 2 || (faces_[loop[k1]] & faces_[loop[k2]]) != 0) return std::nullopt;
+  const std::vector<int> first(loop.begin() + k1, loop.begin() + k2 + 1);
+  std::vector<int> second(loop.begin() + k2, loop.end());
+  second.insert(second.end(), loop.begin(), loop.begin() + k1 + 1);
+  LoopMethod unused;
+  std::vector<Triangle> out = triangulate_smooth(first, unused);
+  const std::vector<Triangle> rest = triangulate_smooth(second, unused);
+  out.insert(out.end(), rest.begin(), rest.end());
+  return out;
+}
+
+std::vector<Triangle> Splitter::triangulate_smooth(const std::vector<int>& loop, LoopMethod& method) {
+  if (loop.size() == 3) {
+    method = LoopMethod::divide_and_conquer;
+    return {{loop[0], loop[1], loop[2]}};
+  }
+  const LoopPoints points{position_, faces_};
+  // Larger components: divide and conquer cuts ears off them, small triangles far from the
+  // pieces' centres (checkMesh skewness); the fan around the component's least-squares
+  // surface point (rank 1: the mass point moved onto the mean tangent plane, O(h^2) off the
+  // interface) reaches the middle from every triangle.
+  if (static_cast<int>(loop.size()) >= options_.fan_points) {
+    const auto [s, n] = fitted_points(loop);
+    Vec3 mass = Vec3::Zero();
+    for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
+    if (!s.empty())
+      if (const auto p = clamp(tangent_intersection(s, n, mass, 1), options_.reach)) {
+        method = LoopMethod::surface_fan;
+        return triangulate_fan(loop, add_point(*p));
+      }
+  }
+  if (auto t = triangulate_divide_and_conquer(points, loop)) {
+    method = LoopMethod::divide_and_conquer;
+    return std::move(*t);
+  }
+  if (auto t = triangulate_across_faces(points, loop)) {
+    method = LoopMethod::across_faces;
+    return std::move(*t);
+  }
+  method = LoopMethod::centroid_fan;
+  Vec3 centroid = Vec3::Zero();
+  for (int p : loop) centroid += position_[p] / static_cast<double>(loop.size());
+  return triangulate_fan(loop, add_point(centroid));
+}
+
+void Splitter::build_pieces() {
+  const int np = static_cast<int>(in_.polygons.size());
+  UnionFind sets(np);
+  // Polygons sharing a piece of a cell edge (or of a line inside a transition face) that no
+  // contour segment runs along.
+  std::map<std::pair<int, int>, int> edge_polygon;
+  std::vector<std::pair<int, int>> contour;
+  for (const CellSegment& s : segments_) contour.push_back(edge_key(s.a, s.b));
+  std::sort(contour.begin(), contour.end());
+  for (int p = 0; p < np; ++p) {
+    const std::vector<int>& loop = in_.polygons[p].points;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const std::pair<int, int> e = edge_key(loop[i], loop[(i + 1) % loop.size()]);
+      if (std::binary_search(contour.begin(), contour.end(), e)) continue;
+      const auto [it, fresh] = edge_polygon.emplace(e, p);
+      if (!fresh) sets.unite(it->second, p);
+    }
+  }
+  // Each component has one piece on either side.
+  for (const Loop& loop : loops_)
+    for (int s : loop.segments) {
+      sets.unite(segments_[loop.segments[0]].left_polygon, segments_[s].left_polygon);
+      sets.unite(segments_[loop.segments[0]].right_polygon, segments_[s].right_polygon);
+    }
+  std::vector<int> piece_of_root(np, -1);
+  out_.polygon_piece.assign(np, -1);
+  for (int p = 0; p < np; ++p) {
+    const int root = sets.find(p);
+    if (piece_of_root[root] < 0) {
+      piece_of_root[root] = static_cast<int>(out_.pieces.size());
+      out_.pieces.push_back({in_.polygons[p].region, {}});
+    }
+    CellPiece& piece = out_.pieces[piece_of_root[root]];
+    if (piece.region != in_.polygons[p].region)
+      throw std::logic_error("split_cell: a piece joins two regions");
+    piece.polygons.push_back(p);
+    out_.polygon_piece[p] = piece_of_root[root];
+  }
+}
+
+// Triangles follow the loop, whose lower label lies on the left seen from outside: their
+// normals point into the lower label's piece.
+void Splitter::emit_triangles(const std::vector<std::vector<Triangle>>& triangles) {
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    const auto [lower, higher] = loop_pieces(loops_[l]);
+    for (const Triangle& t : triangles[l]) out_.triangles.push_back({t, lower, higher, static_cast<int>(l)});
+  }
+}
+
+// Volume-weighted centres of the pieces, from their polygons (split around their vertex
+// average) and the triangles.
+std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle>>& triangles) const {
+  const std::size_t n = out_.pieces.size();
+  std::vector<double> volume(n, 0.0);
+  std::vector<Vec3> moment(n, Vec3::Zero());
+  const Vec3 o = in_.corners[0];
+  const auto add = [&](int piece, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double v = tet_volume(o, a, b, c);
+    volume[piece] += v;
+    moment[piece] += v * (o + a + b + c) / 4.0;
+  };
+  for (std::size_t p = 0; p < in_.polygons.size(); ++p) {
+    const std::vector<int>& loop = in_.polygons[p].points;
+    Vec3 mid = Vec3::Zero();
+    for (int v : loop) mid += position_[v] / static_cast<double>(loop.size());
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      add(out_.polygon_piece[p], position_[loop[i]], position_[loop[(i + 1) % loop.size()]], mid);
+  }
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    const auto [lower, higher] = loop_pieces(loops_[l]);
+    for (const Triangle& t : triangles[l]) {
+      add(higher, position_[t[0]], position_[t[1]], position_[t[2]]);
+      add(lower, position_[t[0]], position_[t[2]], position_[t[1]]);
+    }
+  }
+  std::vector<Vec3> centre(n);
+  for (std::size_t p = 0; p < n; ++p) centre[p] = volume[p] != 0.0 ? Vec3(moment[p] / volume[p]) : o;
+  return centre;
+}
+
+// OpenFOAM's skewness of triangle t between the pieces with these centres (checkMesh,
+// primitiveMeshTools::faceSkewness and boundaryFaceSkewness), `outside` when the lower
+// side is region 0 and the face a boundary face.
+double Splitter::skewness(const Triangle& t, const Vec3& owner, const Vec3& neighbour, bool outside) const {
+  const Vec3 &a = position_[t[0]], &b = position_[t[1]], &c = position_[t[2]];
+  const Vec3 centre = (a + b + c) / 3.0, area = 0.5 * (b - a).cross(c - a);
+  Vec3 offset;
+  double scale;
+  if (outside) {
+    const Vec3 n = area.normalized();
+    const Vec3 along = n * n.dot(centre - owner);
+    offset = centre - owner - along;
+    scale = 0.4 * along.norm();
+  } else {
+    const Vec3 d = neighbour - owner;
+    const double denom = area.dot(d);
+    if (std::abs(denom) < 1e-300) return std::numeric_limits<double>::infinity();
+    offset = centre - (owner + area.dot(centre - owner) / denom * d);
+    scale = 0.2 * d.norm();
+  }
+  const double len = offset.norm();
+  if (len == 0.0) return 0.0;
+  for (const Vec3* p : {&a, &b, &c}) scale = std::max(scale, std::abs(offset.dot(*p - centre)) / len);
+  return scale > 0.0 ? len / scale : std::numeric_limits<double>::infinity();
+}
+
+// Flips the diagonal of two coplanar triangles of a component (the surface does not move)
+// where that lowers the larger skewness of the two: a fan around a feature point running
+// next to a cell face leaves slivers on the flat facets beside it.
+void Splitter::flip_slivers(std::vector<std::vector<Triangle>>& triangles) {
+  const std::vector<Vec3> centre = piece_centres(triangles);
+  const double flat = options_.flat * size_;
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    std::vector<Triangle>& tris = triangles[l];
+    const auto [lower, higher] = loop_pieces(loops_[l]);
+    const bool outside = out_.pieces[lower].region == 0;
+    const auto skew = [&](const Triangle& t) { return skewness(t, centre[higher], centre[lower], outside); };
+    for (int pass = 0; pass < 4; ++pass) {
+      bool flipped = false;
+      for (std::size_t i = 0; i < tris.size(); ++i)
+        for (std::size_t j = i + 1; j < tris.size(); ++j)
+          for (int e = 0; e < 3; ++e) {
+            // t1 = (u, v, a) and t2 holding v -> u with third point b.
+            const int u = tris[i][e], v = tris[i][(e + 1) % 3], a = tris[i][(e + 2) % 3];
+            int f = 0;
+            while (f < 3 && !(tris[j][f] == v && tris[j][(f + 1) % 3] == u)) ++f;
+            if (f == 3) continue;
+            const int b = tris[j][(f + 2) % 3];
+            if ((faces_[a] & faces_[b]) != 0 || a == b) continue;
+            const Vec3 n1 = (position_[v] - position_[u]).cross(position_[a] - position_[u]);
+            const Vec3 n2 = (position_[u] - position_[v]).cross(position_[b] - position_[v]);
+            if (std::abs(n1.normalized().dot(position_[b] - position_[u])) > flat ||
+                std::abs(n2.normalized().dot(position_[a] - position_[u])) > flat)
+              continue;
+            const Triangle s1{u, b, a}, s2{v, a, b};
+            const Vec3 m1 = (position_[b] - position_[u]).cross(position_[a] - position_[u]);
+            const Vec3 m2 = (position_[a] - position_[v]).cross(position_[b] - position_[v]);
+            if (m1.dot(n1) <= 0.0 || m2.dot(n1) <= 0.0) continue;  // the quad is not convex
+            if (std::max(skew(s1), skew(s2)) + 1e-9 >= std::max(skew(tris[i]), skew(tris[j]))) continue;
+            tris[i] = s1;
+            tris[j] = s2;
+            flipped = true;
+            e = 3;
+          }
+      if (!flipped) break;
+    }
+  }
+}
+
+CellSplit Splitter::run() {
+  build_loops();
+  std::vector<std::vector<Triangle>> triangles;
+  for (const Loop& loop : loops_) {
+    LoopMethod method;
+    triangles.push_back(triangulate(loop, method));
+    out_.loops.push_back(method);
+  }
+  build_pieces();
+  flip_slivers(triangles);
+  emit_triangles(triangles);
+  return std::move(out_);
+}
+
+}  // namespace
+
+namespace {
+
+// The planes of the six faces: centre and outward unit normal.
+std::array<std::pair<Vec3, Vec3>, 6> face_planes(const std::array<Vec3, 8>& corners) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& c : corners) centre += c / 8.0;
+  std::array<std::pair<Vec3, Vec3>, 6> planes;
+  for (int k = 0; k < 6; ++k) {
+    const std::array<int, 4> f = face_corners(k);
+    const Vec3 face_centre = 0.25 * (corners[f[0]] + corners[f[1]] + corners[f[2]] + corners[f[3]]);
+    Vec3 normal = (corners[f[2]] - corners[f[0]]).cross(corners[f[3]] - corners[f[1]]).normalized();
+    if (normal.dot(face_centre - centre) < 0) normal = -normal;
+    planes[k] = {face_centre, normal};
+  }
+  return planes;
+}
+
+}  // namespace
+
+double depth_inside_cell(const std::array<Vec3, 8>& corners, const Vec3& p) {
+  double depth = std::numeric_limits<double>::infinity();
+  for (const auto& [centre, normal] : face_planes(corners)) depth = std::min(depth, normal.dot(centre - p));
+  return depth;
+}
+
+std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, double margin,
+                                    double reach) {
+  const auto planes = face_planes(corners);
+  double depth = std::numeric_limits<double>::infinity();
+  for (const auto& [centre, normal] : planes) depth = std::min(depth, normal.dot(centre - p));
+  if (depth < -reach) return std::nullopt;
+  for (int pass = 0; pass < 3; ++pass)
+    for (const auto& [centre, normal] : planes)
+      if (const double d = normal.dot(centre - p); d < margin) p -= (margin - d) * normal;
+  return p;
+}
+
+CellSplit split_cell(const CellInput& cell, const CellOptions& options) {
+  return Splitter(cell, options).run();
+}
+
+}  // namespace volmesh::cutcell

@@ -1,0 +1,128 @@
+#pragma once
+// The state of one MMCMS pass over an octree: the grid vertices (moved off interfaces where
+// needed), the leaves that are cut, their fine edges with the edge interface points and
+// their fine faces with the M3S contours. A fine face is a leaf face that is not a
+// transition face: the face of the smaller leaf where sizes differ.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "volmesh/cutcell/cell_split.hpp"
+#include "volmesh/cutcell/cutcell.hpp"
+#include "volmesh/cutcell/face_contour.hpp"
+#include "volmesh/octree/octree.hpp"
+
+namespace volmesh::cutcell {
+
+// A point of the output before numbering: grid vertex v is v, the point of fine edge e is
+// kEdgeKey + e, the point of fine face f is kFaceKey + f; points made inside leaves are
+// numbered per leaf (LeafCut).
+using PointKey = std::int64_t;
+inline constexpr PointKey kEdgeKey = PointKey{1} << 32;
+inline constexpr PointKey kFaceKey = PointKey{2} << 32;
+inline constexpr PointKey kCellKey = PointKey{3} << 32;
+
+struct EdgePoint {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();  // unit, from the lower vertex's region into the higher's
+  // The edge's single crossing, between exactly its end regions: its normal is that of the
+  // interface the point lies on. Otherwise (an edge still crossed several times at the
+  // deepest level) the normal is left out of the least-squares points.
+  bool exact = false;
+};
+
+struct FineFace {
+  Index leaf = kNoIndex;  // the face is (leaf, face), its loop oriented out of leaf
+  std::int8_t face = 0;
+  Index other = kNoIndex;  // the leaf across it; kNoIndex on the root boundary
+  std::int8_t other_face = 0;
+  std::int8_t other_quarter = 0;  // the quarter of other's face it covers (0 when whole)
+};
+
+struct FaceResult {
+  std::vector<PointKey> boundary;  // the contour's boundary points
+  FaceContour contour;
+};
+
+struct GridSettings {
+  bool exact = true;
+  FaceContourOptions face;
+  CellOptions cell;
+};
+
+struct Grid {
+  const Octree* tree = nullptr;
+  const Domain* domain = nullptr;
+  GridSettings settings;
+  OctreeVertices vertices;      // coordinates and nominal regions
+  std::vector<Vec3> position;   // moved where needed
+  std::vector<Index> region;
+  std::vector<std::uint8_t> cut;  // per leaf: its boundary vertices lie in several regions
+
+  // Fine edges of the cut leaves, lower vertex first, sorted.
+  std::vector<std::array<Index, 2>> edges;
+  KeyMap edge_index;
+  std::vector<std::uint8_t> edge_crossings;  // transversal crossings (touches left out)
+  std::vector<EdgePoint> edge_point;         // meaningful where the end regions differ
+
+  // Fine faces of the cut leaves; contours of those whose vertices lie in several regions.
+  std::vector<FineFace> faces;
+  KeyMap face_index;               // leaf * 6 + face -> fine face
+  std::vector<Index> face_result;  // per fine face: index into results, kNoIndex if uniform
+  std::vector<FaceResult> results;
+
+  double leaf_size(Index leaf) const { return tree->cell_size(tree->leaf(leaf).level); }
+  Index find_edge(Index a, Index b) const {
+    return edge_index.find(a < b ? std::uint64_t(a) << 32 | std::uint64_t(b)
+                                 : std::uint64_t(b) << 32 | std::uint64_t(a));
+  }
+};
+
+// Vertices with their regions, the cut leaves.
+Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings);
+// Every vertex on a leaf's boundary: corners, edge midpoints, centres of transition faces.
+void leaf_boundary_vertices(const Grid& grid, Index leaf, std::vector<Index>& out);
+void classify_leaves(Grid& grid);
+// Fine edges of the cut leaves and their interface points (crossings or midpoints).
+void find_edge_points(Grid& grid);
+// Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
+// also covers an edge of a larger leaf whose midpoint lies in another region).
+std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);
+
+// Past the deepest level a leaf edge may still change region twice (a layer thinner than
+// the cell): its midpoint vertex takes the region of the edge's lower corner, so that every
+// side of a face holds at most one interface point. Returns the number of vertices relabelled.
+Index relabel_midpoints(Grid& grid);
+
+// Moves grid vertices whose nearest crossing lies within clearance * edge of them off the
+// interface: across it when that puts them outside the domain (the kept pieces grow),
+// otherwise deeper into their own region. Updates positions and regions; returns
+// {moved, unresolved}.
+std::array<Index, 2> move_vertices(Grid& grid, double clearance);
+
+// Fine faces of the cut leaves and the M3S contour of each cut one.
+void contour_faces(Grid& grid);
+// The paper's rules on face points: a transition face with more than one face interface
+// point splits its leaf; a face interface point that left its face splits the leaves around
+// the face when below max_level.
+std::vector<Index> leaves_for_face_points(const Grid& grid, int max_level);
+
+// Quarter (bu + 2 bv) of big's face that the small leaf's face covers.
+int quarter_of(const OctreeLeaf& small, const OctreeLeaf& big, int axis);
+
+// The grid after the paper's extra refinement rules, the midpoints relabelled and the vertices
+// moved, with the face contours: what M3C runs on.
+Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& options,
+                  CutcellStats& stats);
+
+// One cut leaf split by M3C.
+struct LeafCut {
+  std::vector<PointKey> keys;             // of the CellInput points
+  std::array<int, 24> slot_polygons{};    // first polygon of face slot 4 f + q; -1 if absent
+  CellSplit split;
+};
+LeafCut cut_leaf(const Grid& grid, Index leaf);
+// The M3C input of a cut leaf; fills cut.keys and cut.slot_polygons.
+CellInput leaf_input(const Grid& grid, Index leaf, LeafCut& cut);
+
+}  // namespace volmesh::cutcell

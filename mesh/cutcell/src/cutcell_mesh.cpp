@@ -1,0 +1,166 @@
+// Algorithm 5 of the octree paper: the octree, the extra refinement rules until none
+// applies, the vertices moved off the interfaces, M3S per face, M3C per cut leaf, the mesh.
+#include <oneapi/tbb/parallel_for.h>
+
+#include <chrono>
+#include <iostream>
+#include <string>
+
+#include "assemble.hpp"
+#include "cut_grid.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/geometry.hpp"
+
+namespace volmesh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Splits the listed leaves through the octree's refinement hook (balanced after).
+void split_leaves(Octree& tree, const std::vector<Index>& leaves) {
+  KeyMap chosen(leaves.size());
+  for (Index i : leaves) chosen.insert(octree_code(tree.leaf(i).anchor, tree.leaf(i).level), 1);
+  refine(
+      tree,
+      [&chosen](const Octree& t, Index i) {
+        return chosen.find(octree_code(t.leaf(i).anchor, t.leaf(i).level)) != kNoIndex;
+      },
+      kOctreeMaxLevel);
+}
+
+void check_options(const CutcellOptions& o) {
+  if (o.crossing_levels < 0 || o.face_point_levels < 0)
+    throw InputError("cutcell: the extra refinement levels must not be negative");
+  if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= 0.25))
+    throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");
+}
+
+}  // namespace
+
+namespace cutcell {
+
+// The paper's extra rules until none applies: split the leaves they select (through the
+// octree's refinement hook), recompute; then the grid of the final tree.
+Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& options,
+                  CutcellStats& st) {
+  const auto progress = [&options](const char* stage, double fraction) {
+    if (options.progress) options.progress(stage, fraction);
+  };
+  GridSettings settings;
+  settings.exact = options.interface_points == InterfacePoints::exact;
+  settings.face.exact_points = settings.cell.exact_points = settings.exact;
+  settings.face.feature_theta = settings.cell.feature.theta = options.feature_theta;
+  settings.cell.feature.phi = options.feature_phi;
+  const int level = options.octree.level;
+  const int crossing_level = std::min(kOctreeMaxLevel, level + options.crossing_levels);
+  const int face_level = std::min(kOctreeMaxLevel, level + options.face_point_levels);
+
+  Grid grid;
+  for (;;) {
+    progress("interface points", 0.2);
+    grid = make_grid(tree, domain, settings);
+    find_edge_points(grid);
+    if (const std::vector<Index> split = leaves_crossed_twice(grid, crossing_level); !split.empty()) {
+      std::cerr << "DEBUG rule1 " << split.size() << " leaves " << tree.num_leaves() << "\n";
+      split_leaves(tree, split);
+      ++st.refinement_passes;
+      continue;
+    }
+    st.relabelled_vertices = relabel_midpoints(grid);
+    if (st.relabelled_vertices > 0) {
+      classify_leaves(grid);
+      find_edge_points(grid);
+    }
+    if (settings.exact && options.vertex_clearance > 0.0) {
+      const auto [moved, unresolved] = move_vertices(grid, options.vertex_clearance);
+      st.moved_vertices = moved;
+      st.unresolved_vertices = unresolved;
+      if (moved > 0) {
+        classify_leaves(grid);
+        find_edge_points(grid);
+      }
+    }
+    progress("face contours", 0.4);
+    contour_faces(grid);
+    if (const std::vector<Index> split = leaves_for_face_points(grid, face_level); !split.empty()) {
+      std::cerr << "DEBUG rule23 " << split.size() << " leaves " << tree.num_leaves() << "\n";
+      split_leaves(tree, split);
+      ++st.refinement_passes;
+      continue;
+    }
+    return grid;
+  }
+}
+
+}  // namespace cutcell
+
+PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, CutcellStats* stats) {
+  using namespace cutcell;
+  const Clock::time_point start = Clock::now();
+  check_options(options);
+  const auto progress = [&options](const char* stage, double fraction) {
+    if (options.progress) options.progress(stage, fraction);
+  };
+  CutcellStats st;
+  st.level = options.octree.level;
+
+  progress("octree", 0.0);
+  Octree tree = build_octree(domain, options.octree);
+  st.octree_seconds = seconds_since(start);
+
+  const Clock::time_point cutting = Clock::now();
+  const Grid grid = refined_grid(tree, domain, options, st);
+
+  progress("cut cells", 0.6);
+  std::vector<Index> cut_of(tree.num_leaves(), kNoIndex);
+  std::vector<Index> cut_leaves;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (grid.cut[i]) {
+      cut_of[i] = static_cast<Index>(cut_leaves.size());
+      cut_leaves.push_back(i);
+    }
+  std::vector<LeafCut> cuts(cut_leaves.size());
+  tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
+                    [&](std::size_t k) { cuts[k] = cut_leaf(grid, cut_leaves[k]); });
+  for (const FaceResult& r : grid.results) st.face_point_fallbacks += r.contour.point_left_face;
+  for (const LeafCut& c : cuts) {
+    st.cell_point_fallbacks += c.split.cell_point_left_cell;
+    for (LoopMethod m : c.split.loops) {
+      st.feature_points += m == LoopMethod::feature_fan;
+      st.surface_fans += m == LoopMethod::surface_fan;
+      st.cell_points += m == LoopMethod::interface_fan;
+      st.centroid_fans += m == LoopMethod::centroid_fan;
+      st.across_face_triangulations += m == LoopMethod::across_faces;
+    }
+  }
+
+  progress("mesh", 0.8);
+  AssemblyStats assembly;
+  PolyMesh mesh = assemble(grid, cuts, cut_of, assembly);
+  if (mesh.num_cells() == 0)
+    throw InputError("cutcell: no cell lies inside the domain at level " + std::to_string(st.level) +
+                     " (the domain is thinner than a cell); raise the level");
+
+  // Smallest cell relative to its leaf.
+  const MeshGeometry geometry = mesh_geometry(mesh, build_cell_faces(mesh));
+  double ratio = std::numeric_limits<double>::infinity();
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const double h = tree.cell_size(tree.leaf(assembly.cell_leaf[c]).level);
+    ratio = std::min(ratio, geometry.cells[c].volume / (h * h * h));
+  }
+  st.min_cell_volume_ratio = ratio;
+  st.max_leaf_level = tree.max_leaf_level();
+  st.leaves = tree.num_leaves();
+  st.cells = mesh.num_cells();
+  st.cut_cells = assembly.cut_cells;
+  st.faces = mesh.num_faces();
+  st.vertices = mesh.num_points();
+  st.cut_seconds = seconds_since(cutting);
+  st.total_seconds = seconds_since(start);
+  progress("done", 1.0);
+  if (stats) *stats = st;
+  return mesh;
+}
+
+}  // namespace volmesh

@@ -1,0 +1,301 @@
+// M3S with the exact interface points of MMCMS: marching squares for two regions (the
+// four-point ambiguity resolved by the normals), the diagonal rule for three regions with
+// equal opposite corners, otherwise a face interface point at the least-squares intersection
+// of the tangent lines (centroid of the interface points when it leaves the face).
+#include "volmesh/cutcell/face_contour.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "volmesh/cutcell/tangent_point.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+struct Frame {
+  Vec3 centre, normal;
+  std::array<Vec3, 4> corner;
+  double size;  // side length
+};
+
+Frame face_frame(const FaceInput& face) {
+  Frame f;
+  f.centre = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) {
+    f.corner[k] = face.boundary[face.corners[k]].position;
+    f.centre += 0.25 * f.corner[k];
+  }
+  const Vec3 area = (f.corner[2] - f.corner[0]).cross(f.corner[3] - f.corner[1]);
+  f.size = std::sqrt(0.5 * area.norm());
+  f.normal = area.normalized();
+  return f;
+}
+
+Vec3 in_plane(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
+
+// Distance of p inside the face from its nearest side (negative outside), in the face plane.
+double depth_inside(const Frame& f, const Vec3& p) {
+  double depth = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 side = in_plane(f.corner[(k + 1) % 4] - f.corner[k], f.normal);
+    const Vec3 inward = f.normal.cross(side).normalized();
+    depth = std::min(depth, inward.dot(p - f.corner[k]));
+  }
+  return depth;
+}
+
+// p pushed into the face until it lies margin inside every side; nullopt when p lies
+// farther than `reach` outside it.
+std::optional<Vec3> clamp_into(const Frame& f, Vec3 p, double margin, double reach) {
+  if (depth_inside(f, p) < -reach) return std::nullopt;
+  for (int pass = 0; pass < 3; ++pass)
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 side = in_plane(f.corner[(k + 1) % 4] - f.corner[k], f.normal);
+      const Vec3 inward = f.normal.cross(side).normalized();
+      const double d = inward.dot(p - f.corner[k]);
+      if (d < margin) p += (margin - d) * inward;
+    }
+  return p;
+}
+
+class Contourer {
+ public:
+  Contourer(const FaceInput& face, const FaceContourOptions& options)
+      : face_(face), options_(options), n_(static_cast<int>(face.boundary.size())),
+        frame_(face_frame(face)) {}
+
+  FaceContour run();
+
+ private:
+  const BoundaryPoint& at(int i) const { return face_.boundary[(i + n_) % n_]; }
+  Index region_before(int i) const { return at(i - 1).region; }
+  Index region_after(int i) const { return at(i + 1).region; }
+  Vec3 projected_normal(int i) const {
+    const Vec3 m = in_plane(at(i).normal, frame_.normal);
+    const double len = m.norm();
+    return len > 1e-12 ? Vec3(m / len) : Vec3::Zero();
+  }
+  void chord(int p, int q);
+  void star();
+  void walk_polygons();
+  bool try_feature_point(int p, int q);
+  int nearest_side_point(const Vec3& p) const;
+  double chord_agreement(int p, int q) const;
+  int face_point_index() const { return n_; }
+
+  const FaceInput& face_;
+  const FaceContourOptions& options_;
+  const int n_;
+  const Frame frame_;
+  std::vector<int> crossing_;  // interface points in boundary order
+  std::array<int, 4> side_point_{-1, -1, -1, -1};  // the interface point of each side
+  std::vector<int> partner_;   // chord partner of a boundary point, -1 if none
+  std::vector<char> via_point_;  // the chord from this point passes through the face point
+  FaceContour out_;
+};
+
+// How well the chord p -> q agrees with the tangent lines at its ends: the normal at each
+// end should point from the chord's left region into its right one. The ambiguous
+// two-region face takes the pairing that agrees best.
+double Contourer::chord_agreement(int p, int q) const {
+  const Vec3 d = in_plane(at(q).position - at(p).position, frame_.normal);
+  const double len = d.norm();
+  if (len == 0.0) return 0.0;
+  const Vec3 right = d.cross(frame_.normal) / len;
+  // Left of p -> q is the region before p; at q the region before q lies on the right.
+  return projected_normal(p).dot(right) - projected_normal(q).dot(right);
+}
+
+bool Contourer::try_feature_point(int p, int q) {
+  const Vec3 mp = projected_normal(p), mq = projected_normal(q);
+  // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
+  if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
+  const std::array<Vec3, 2> s{at(p).position, at(q).position}, m{mp, mq};
+  const Vec3 point = tangent_intersection(s, m, 2);
+  if (depth_inside(frame_, point) < options_.margin * frame_.size) return false;
+  out_.kind = FacePointKind::feature_point;
+  out_.point = point;
+  return true;
+}
+
+void Contourer::chord(int p, int q) {
+  partner_[p] = q;
+  partner_[q] = p;
+  const Index left = region_before(p), right = region_after(p);
+  if (options_.exact_points && out_.kind == FacePointKind::none && crossing_.size() == 2 &&
+      try_feature_point(p, q)) {
+    via_point_[p] = via_point_[q] = 1;
+    out_.segments.push_back({p, face_point_index(), left, right});
+    out_.segments.push_back({face_point_index(), q, left, right});
+    return;
+  }
+  out_.segments.push_back({p, q, left, right});
+}
+
+// The side nearest p (in the face plane) and its interface point, -1 if it has none.
+int Contourer::nearest_side_point(const Vec3& p) const {
+  int best = 0;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 side = in_plane(frame_.corner[(k + 1) % 4] - frame_.corner[k], frame_.normal);
+    const double d = frame_.normal.cross(side).normalized().dot(p - frame_.corner[k]);
+    if (d < nearest) {
+      nearest = d;
+      best = k;
+    }
+  }
+  return side_point_[best];
+}
+
+// The face interface point joined to every edge point. When the least-squares point lies at
+// a side (the junction meets the face next to its edge), it lands on that side's edge point
+// if there is one (§3.3: the two coincide), otherwise it is pushed inside.
+void Contourer::star() {
+  out_.kind = FacePointKind::interface_point;
+  int centre = face_point_index();
+  if (options_.exact_points) {
+    std::vector<Vec3> s, m;
+    for (int i : crossing_) {
+      s.push_back(at(i).position);
+      m.push_back(projected_normal(i));
+    }
+    const Vec3 p = tangent_intersection(s, m, 2);
+    const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
+    const int side_point = nearest_side_point(p);
+    if (depth_inside(frame_, p) >= margin) {
+      out_.point = p;
+    } else if (side_point >= 0 && (at(side_point).position - p).norm() <= reach) {
+      centre = side_point;
+      out_.point = at(side_point).position;
+    } else if (const std::optional<Vec3> q = clamp_into(frame_, p, margin, reach)) {
+      out_.point = *q;
+    } else {
+      out_.point_left_face = true;
+      out_.point = Vec3::Zero();
+      for (const Vec3& x : s) out_.point += x / static_cast<double>(s.size());
+    }
+  } else {
+    out_.point = frame_.centre;
+  }
+  if (centre != face_point_index()) out_.centre = centre;
+  const int m = static_cast<int>(crossing_.size());
+  for (int k = 0; k < m; ++k) {
+    const int x = crossing_[k], next = crossing_[(k + 1) % m];
+    if (x != centre) {
+      out_.segments.push_back({x, centre, region_before(x), region_after(x), -1, k});
+      out_.segments.back().left_polygon = (k + m - 1) % m;
+    }
+    FacePolygon poly{region_after(x), {}};
+    for (int i = x; i != next; i = (i + 1) % n_) poly.points.push_back(i);
+    poly.points.push_back(next);
+    if (centre != x && centre != next) poly.points.push_back(centre);
+    out_.polygons.push_back(std::move(poly));
+  }
+}
+
+// Traces the polygons bounded by the sides and the chords: along the boundary until a chord
+// end, across the chord, on along the boundary from its other end.
+void Contourer::walk_polygons() {
+  std::vector<char> used(n_, 0);  // boundary piece i -> i+1 traced
+  for (int start = 0; start < n_; ++start) {
+    if (used[start]) continue;
+    const int index = static_cast<int>(out_.polygons.size());
+    FacePolygon poly{kNoIndex, {}};
+    int i = start;
+    do {
+      poly.points.push_back(i);
+      used[i] = 1;
+      if (poly.region == kNoIndex && !at(i).is_interface()) poly.region = at(i).region;
+      const int j = (i + 1) % n_;
+      if (partner_[j] >= 0) {
+        poly.points.push_back(j);
+        if (via_point_[j]) poly.points.push_back(face_point_index());
+        for (ContourSegment& s : out_.segments) {
+          if (s.a == j) s.left_polygon = index;
+          if (s.b == j) s.right_polygon = index;
+          if (via_point_[j] && s.a == face_point_index() && s.b == partner_[j]) s.left_polygon = index;
+          if (via_point_[j] && s.b == face_point_index() && s.a == partner_[j]) s.right_polygon = index;
+        }
+        i = partner_[j];
+      } else {
+        i = j;
+      }
+    } while (i != start);
+    if (poly.region == kNoIndex) poly.region = at((start + 1) % n_).region;
+    out_.polygons.push_back(std::move(poly));
+  }
+}
+
+FaceContour Contourer::run() {
+  std::array<int, 4>& side_point = side_point_;
+  std::array<Index, 4> r{};
+  for (int k = 0; k < 4; ++k) r[k] = at(face_.corners[k]).region;
+  for (int k = 0; k < 4; ++k) {
+    const int end = k == 3 ? face_.corners[0] + n_ : face_.corners[k + 1];
+    for (int i = face_.corners[k] + 1; i < end; ++i)
+      if (at(i).is_interface()) {
+        if (side_point[k] >= 0 || r[k] == r[(k + 1) % 4])
+          throw std::logic_error("contour_face: side with a wrong number of interface points");
+        side_point[k] = i % n_;
+      }
+    if (side_point[k] < 0 && r[k] != r[(k + 1) % 4])
+      throw std::logic_error("contour_face: side without its interface point");
+  }
+  for (int k = 0; k < 4; ++k)
+    if (side_point[k] >= 0) crossing_.push_back(side_point[k]);
+  std::sort(crossing_.begin(), crossing_.end());
+  partner_.assign(n_, -1);
+  via_point_.assign(n_, 0);
+
+  std::vector<Index> distinct(r.begin(), r.end());
+  std::sort(distinct.begin(), distinct.end());
+  const int regions = static_cast<int>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
+  const int np = static_cast<int>(crossing_.size());
+
+  if (np == 0) {
+    FacePolygon poly{r[0], {}};
+    for (int i = 0; i < n_; ++i) poly.points.push_back(i);
+    out_.polygons.push_back(std::move(poly));
+    return std::move(out_);
+  }
+  if (np == 3 || (np == 4 && regions == 4)) {
+    star();
+    return std::move(out_);
+  }
+  if (np == 2) {
+    chord(crossing_[0], crossing_[1]);
+  } else {
+    // Four interface points, two or three regions. Corner k lies between sides k-1 and k;
+    // cutting corners 0 and 2 pairs (side 3, side 0) and (side 1, side 2).
+    bool cut_even;
+    if (regions == 3) {
+      cut_even = r[1] == r[3];  // keep the equal diagonal connected
+    } else {
+      const double even = chord_agreement(side_point[3], side_point[0]) +
+                          chord_agreement(side_point[1], side_point[2]);
+      const double odd = chord_agreement(side_point[0], side_point[1]) +
+                         chord_agreement(side_point[2], side_point[3]);
+      cut_even = even != odd ? even > odd : r[0] < r[1];  // tie: keep the higher label connected
+    }
+    if (cut_even) {
+      chord(side_point[3], side_point[0]);
+      chord(side_point[1], side_point[2]);
+    } else {
+      chord(side_point[0], side_point[1]);
+      chord(side_point[2], side_point[3]);
+    }
+  }
+  walk_polygons();
+  return std::move(out_);
+}
+
+}  // namespace
+
+FaceContour contour_face(const FaceInput& face, const FaceContourOptions& options) {
+  return Contourer(face, options).run();
+}
+
+}  // namespace volmesh::cutcell

@@ -1,0 +1,132 @@
+// The fine faces of the cut leaves and M3S on each face whose vertices lie in several
+// regions. A face is contoured once, from the leaf that owns it, so both sides share it.
+#include <oneapi/tbb/parallel_for.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "cut_grid.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+std::uint64_t face_code(Index leaf, int face) { return std::uint64_t(leaf) * 6 + std::uint64_t(face); }
+
+// The fine faces on the six sides of a leaf.
+void fine_faces_of(const Octree& tree, Index leaf, std::vector<FineFace>& out) {
+  for (int f = 0; f < 6; ++f) {
+    const FaceNeighbours nb = tree.face_neighbours(leaf, f);
+    const auto face = static_cast<std::int8_t>(f), back = static_cast<std::int8_t>(opposite_face(f));
+    switch (nb.kind) {
+      case FaceKind::Boundary:
+        out.push_back({leaf, face, kNoIndex, 0, 0});
+        break;
+      case FaceKind::Coarser: {
+        const Index big = nb.leaves[0];
+        const auto q = static_cast<std::int8_t>(quarter_of(tree.leaf(leaf), tree.leaf(big), f / 2));
+        out.push_back({leaf, face, big, back, q});
+        break;
+      }
+      case FaceKind::Same:
+        if (leaf < nb.leaves[0])
+          out.push_back({leaf, face, nb.leaves[0], back, 0});
+        else
+          out.push_back({nb.leaves[0], back, leaf, face, 0});
+        break;
+      case FaceKind::Finer:
+        for (int q = 0; q < 4; ++q) out.push_back({nb.leaves[q], back, leaf, face, static_cast<std::int8_t>(q)});
+        break;
+    }
+  }
+}
+
+std::optional<FaceResult> contour(const Grid& grid, const FineFace& face) {
+  std::vector<Index> loop;
+  leaf_face_loop(grid.vertices, face.leaf, face.face, loop);
+  const Index r0 = grid.region[loop[0]];
+  if (std::all_of(loop.begin(), loop.end(), [&](Index v) { return grid.region[v] == r0; }))
+    return std::nullopt;
+  FaceResult result;
+  FaceInput input;
+  int corner = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Index u = loop[i], w = loop[(i + 1) % loop.size()];
+    // leaf_face_loop lists corner k, then the midpoint of edge k if there is one.
+    if (corner < 4 && u == grid.vertices.leaf_corners[face.leaf][kFaceCorners[face.face][corner]])
+      input.corners[corner++] = static_cast<int>(input.boundary.size());
+    input.boundary.push_back({grid.position[u], grid.region[u], Vec3::Zero()});
+    result.boundary.push_back(u);
+    if (grid.region[u] == grid.region[w]) continue;
+    const Index e = grid.find_edge(u, w);
+    const EdgePoint& p = grid.edge_point[e];
+    const Vec3 normal = grid.settings.exact && !p.exact ? Vec3::Zero() : p.normal;
+    input.boundary.push_back({p.point, kNoIndex, u < w ? normal : Vec3(-normal)});
+    result.boundary.push_back(kEdgeKey + e);
+  }
+  result.contour = contour_face(input, grid.settings.face);
+  return result;
+}
+
+}  // namespace
+
+void contour_faces(Grid& grid) {
+  const Octree& tree = *grid.tree;
+  std::vector<Index> cut_leaves;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (grid.cut[i]) cut_leaves.push_back(i);
+  std::vector<std::vector<FineFace>> per_leaf(cut_leaves.size());
+  tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
+                    [&](std::size_t k) { fine_faces_of(tree, cut_leaves[k], per_leaf[k]); });
+  std::vector<FineFace> faces;
+  for (const auto& list : per_leaf) faces.insert(faces.end(), list.begin(), list.end());
+  std::sort(faces.begin(), faces.end(), [](const FineFace& a, const FineFace& b) {
+    return face_code(a.leaf, a.face) < face_code(b.leaf, b.face);
+  });
+  faces.erase(std::unique(faces.begin(), faces.end(),
+                          [](const FineFace& a, const FineFace& b) { return a.leaf == b.leaf && a.face == b.face; }),
+              faces.end());
+  grid.faces = std::move(faces);
+  grid.face_index = KeyMap(grid.faces.size());
+  for (std::size_t i = 0; i < grid.faces.size(); ++i)
+    grid.face_index.insert(face_code(grid.faces[i].leaf, grid.faces[i].face), static_cast<Index>(i));
+
+  std::vector<std::optional<FaceResult>> results(grid.faces.size());
+  tbb::parallel_for(std::size_t{0}, grid.faces.size(),
+                    [&](std::size_t i) { results[i] = contour(grid, grid.faces[i]); });
+  grid.face_result.assign(grid.faces.size(), kNoIndex);
+  grid.results.clear();
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (results[i]) {
+      grid.face_result[i] = static_cast<Index>(grid.results.size());
+      grid.results.push_back(std::move(*results[i]));
+    }
+}
+
+std::vector<Index> leaves_for_face_points(const Grid& grid, int max_level) {
+  const Octree& tree = *grid.tree;
+  std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
+  for (std::size_t i = 0; i < grid.faces.size(); ++i) {
+    const Index r = grid.face_result[i];
+    if (r == kNoIndex || !grid.results[r].contour.point_left_face) continue;
+    for (const Index leaf : {grid.faces[i].leaf, grid.faces[i].other})
+      if (leaf != kNoIndex && tree.leaf(leaf).level < max_level) flag[leaf] = 1;
+  }
+  // A transition face holds at most one face interface point: its leaf is split otherwise.
+  for (const FineFace& face : grid.faces) {
+    if (face.other == kNoIndex || tree.leaf(face.other).level == tree.leaf(face.leaf).level) continue;
+    int points = 0;
+    const FaceNeighbours nb = tree.face_neighbours(face.other, face.other_face);
+    for (const Index small : nb.leaves) {
+      const Index f = grid.face_index.find(face_code(small, opposite_face(face.other_face)));
+      const Index r = f == kNoIndex ? kNoIndex : grid.face_result[f];
+      points += r != kNoIndex && grid.results[r].contour.kind == FacePointKind::interface_point;
+    }
+    if (points > 1) flag[face.other] = 1;
+  }
+  std::vector<Index> out;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (flag[i]) out.push_back(i);
+  return out;
+}
+
+}  // namespace volmesh::cutcell

@@ -1,0 +1,184 @@
+// Vertices, cut leaves and edge interface points of one pass.
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
+
+#include <algorithm>
+
+#include "cut_grid.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+// Crossing queries are batched so that the crossing lists of one batch only are in memory.
+constexpr std::size_t kBatch = std::size_t{1} << 16;
+
+std::uint64_t edge_code(Index a, Index b) { return std::uint64_t(a) << 32 | std::uint64_t(b); }
+
+}  // namespace
+
+Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings) {
+  Grid grid;
+  grid.tree = &tree;
+  grid.domain = &domain;
+  grid.settings = settings;
+  grid.vertices = octree_vertices(tree, domain);
+  grid.position = grid.vertices.points;
+  grid.region = grid.vertices.region;
+  classify_leaves(grid);
+  return grid;
+}
+
+void leaf_boundary_vertices(const Grid& grid, Index leaf, std::vector<Index>& out) {
+  const OctreeVertices& v = grid.vertices;
+  for (Index c : v.leaf_corners[leaf]) out.push_back(c);
+  for (Index m : v.leaf_edge_mid[leaf])
+    if (m != kNoIndex) out.push_back(m);
+  const OctreeLeaf& l = grid.tree->leaf(leaf);
+  if (l.size() < 2) return;
+  for (int f = 0; f < 6; ++f) {
+    GridPoint p = l.centre();
+    p[f / 2] = l.anchor[f / 2] + (f & 1) * l.size();
+    if (const Index c = v.find(p); c != kNoIndex) out.push_back(c);
+  }
+}
+
+void classify_leaves(Grid& grid) {
+  const Index n = grid.tree->num_leaves();
+  grid.cut.assign(n, 0);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, n), [&](const tbb::blocked_range<Index>& r) {
+    std::vector<Index> around;
+    for (Index i = r.begin(); i < r.end(); ++i) {
+      around.clear();
+      leaf_boundary_vertices(grid, i, around);
+      const Index r0 = grid.region[around[0]];
+      grid.cut[i] = std::any_of(around.begin(), around.end(),
+                                [&](Index v) { return grid.region[v] != r0; });
+    }
+  });
+}
+
+int quarter_of(const OctreeLeaf& small, const OctreeLeaf& big, int axis) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const int lo = std::min(u, v), hi = std::max(u, v);
+  const std::uint32_t s = small.size();
+  return static_cast<int>((small.anchor[lo] - big.anchor[lo]) / s +
+                          2 * ((small.anchor[hi] - big.anchor[hi]) / s));
+}
+
+void find_edge_points(Grid& grid) {
+  const Octree& tree = *grid.tree;
+  const OctreeVertices& v = grid.vertices;
+  std::vector<Index> cut_leaves;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (grid.cut[i]) cut_leaves.push_back(i);
+  std::vector<std::uint64_t> codes(24 * cut_leaves.size(), ~std::uint64_t{0});
+  tbb::parallel_for(std::size_t{0}, cut_leaves.size(), [&](std::size_t k) {
+    const Index i = cut_leaves[k];
+    for (int e = 0; e < 12; ++e) {
+      const Index a = v.leaf_corners[i][kEdgeCorners[e][0]], b = v.leaf_corners[i][kEdgeCorners[e][1]];
+      const Index m = v.leaf_edge_mid[i][e];
+      const auto code = [](Index p, Index q) { return p < q ? edge_code(p, q) : edge_code(q, p); };
+      if (m == kNoIndex) {
+        codes[24 * k + 2 * e] = code(a, b);
+      } else {
+        codes[24 * k + 2 * e] = code(a, m);
+        codes[24 * k + 2 * e + 1] = code(m, b);
+      }
+    }
+  });
+  tbb::parallel_sort(codes.begin(), codes.end());
+  codes.erase(std::unique(codes.begin(), codes.end()), codes.end());
+  if (!codes.empty() && codes.back() == ~std::uint64_t{0}) codes.pop_back();
+
+  const std::size_t ne = codes.size();
+  grid.edges.resize(ne);
+  grid.edge_index = KeyMap(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    grid.edges[e] = {static_cast<Index>(codes[e] >> 32), static_cast<Index>(codes[e] & 0xffffffffu)};
+    grid.edge_index.insert(codes[e], static_cast<Index>(e));
+  }
+  grid.edge_crossings.assign(ne, 0);
+  grid.edge_point.assign(ne, EdgePoint{});
+
+  std::vector<Vec3> a, b;
+  std::vector<std::vector<Crossing>> hits;
+  for (std::size_t start = 0; start < ne; start += kBatch) {
+    const std::size_t end = std::min(ne, start + kBatch);
+    a.resize(end - start);
+    b.resize(end - start);
+    for (std::size_t e = start; e < end; ++e) {
+      a[e - start] = grid.position[grid.edges[e][0]];
+      b[e - start] = grid.position[grid.edges[e][1]];
+    }
+    grid.domain->crossings(a, b, hits);
+    tbb::parallel_for(start, end, [&](std::size_t e) {
+      const std::vector<Crossing>& h = hits[e - start];
+      const Index ra = grid.region[grid.edges[e][0]], rb = grid.region[grid.edges[e][1]];
+      int transversal = 0;
+      const Crossing* chosen = nullptr;
+      for (const Crossing& c : h) {
+        if (c.before == c.after) continue;
+        ++transversal;
+        if (!chosen || (chosen->before != ra && c.before == ra)) chosen = &c;
+      }
+      grid.edge_crossings[e] = static_cast<std::uint8_t>(std::min(transversal, 255));
+      if (ra == rb) return;
+      const Vec3 &pa = a[e - start], &pb = b[e - start];
+      EdgePoint& point = grid.edge_point[e];
+      if (grid.settings.exact && chosen) {
+        point.point = chosen->point;
+        point.normal = chosen->normal;
+        point.exact = transversal == 1 && chosen->before == ra && chosen->after == rb;
+      } else {
+        point.point = 0.5 * (pa + pb);
+        point.normal = grid.domain->normal(point.point);
+        if (point.normal.dot(pb - pa) < 0) point.normal = -point.normal;
+      }
+    });
+  }
+}
+
+std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level) {
+  const Octree& tree = *grid.tree;
+  const OctreeVertices& v = grid.vertices;
+  std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
+  tbb::parallel_for(Index{0}, tree.num_leaves(), [&](Index i) {
+    if (!grid.cut[i] || tree.leaf(i).level >= max_level) return;
+    for (int e = 0; e < 12 && !flag[i]; ++e) {
+      const Index a = v.leaf_corners[i][kEdgeCorners[e][0]], b = v.leaf_corners[i][kEdgeCorners[e][1]];
+      const Index m = v.leaf_edge_mid[i][e];
+      int crossings = 0;
+      if (m == kNoIndex) {
+        crossings = grid.edge_crossings[grid.find_edge(a, b)];
+      } else {
+        crossings = grid.edge_crossings[grid.find_edge(a, m)] + grid.edge_crossings[grid.find_edge(m, b)];
+      }
+      flag[i] = crossings > 1;
+    }
+  });
+  std::vector<Index> out;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (flag[i]) out.push_back(i);
+  return out;
+}
+
+Index relabel_midpoints(Grid& grid) {
+  const OctreeVertices& v = grid.vertices;
+  Index relabelled = 0;
+  for (Index i = 0; i < grid.tree->num_leaves(); ++i) {
+    if (!grid.cut[i]) continue;
+    for (int e = 0; e < 12; ++e) {
+      const Index m = v.leaf_edge_mid[i][e];
+      if (m == kNoIndex) continue;
+      const Index ra = grid.region[v.leaf_corners[i][kEdgeCorners[e][0]]];
+      const Index rb = grid.region[v.leaf_corners[i][kEdgeCorners[e][1]]];
+      if (grid.region[m] != ra && grid.region[m] != rb) {
+        grid.region[m] = ra;
+        ++relabelled;
+      }
+    }
+  }
+  return relabelled;
+}
+
+}  // namespace volmesh::cutcell

@@ -1,0 +1,178 @@
+// Tiny cut cells (DESIGN.md §4): a crossing very close to a grid vertex makes an arbitrarily
+// thin piece. The vertex is moved off the interface instead, so that every crossing on its
+// edges lies at least `clearance` of the edge away from it. The interface points stay exact
+// crossings of the domain, so the geometry keeps its second order; only the grid warps.
+#include <algorithm>
+#include <cmath>
+
+#include "cut_grid.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+// Around vertex v: the far ends of its fine edges (along each leaf edge through v, the
+// nearest vertex: a midpoint when the edge has one), and the split leaf edges it ends, as
+// (midpoint, far corner), which must keep a single change of region.
+struct Around {
+  std::vector<Index> ends;
+  std::vector<std::array<Index, 2>> split_edges;
+};
+Around around_vertex(const Grid& grid, Index v) {
+  const Octree& tree = *grid.tree;
+  const OctreeVertices& verts = grid.vertices;
+  const GridPoint c = verts.coords[v];
+  std::vector<Index> leaves;
+  for (int octant = 0; octant < 8; ++octant) {
+    GridPoint q = c;
+    bool inside = true;
+    for (int k = 0; k < 3; ++k) {
+      if (octant >> k & 1) {
+        inside = inside && q[k] > 0;
+        q[k] -= inside ? 1 : 0;
+      } else {
+        inside = inside && q[k] < kOctreeGrid;
+      }
+    }
+    if (!inside) continue;
+    const Index leaf = tree.leaf_containing(q);
+    if (leaf != kNoIndex && std::find(leaves.begin(), leaves.end(), leaf) == leaves.end())
+      leaves.push_back(leaf);
+  }
+  Around out;
+  const auto add = [&out, v](Index w) {
+    if (w != kNoIndex && w != v && std::find(out.ends.begin(), out.ends.end(), w) == out.ends.end())
+      out.ends.push_back(w);
+  };
+  for (Index leaf : leaves) {
+    for (int e = 0; e < 12; ++e) {
+      const Index a = verts.leaf_corners[leaf][kEdgeCorners[e][0]];
+      const Index b = verts.leaf_corners[leaf][kEdgeCorners[e][1]];
+      const Index m = verts.leaf_edge_mid[leaf][e];
+      if (a == v) add(m != kNoIndex ? m : b);
+      if (b == v) add(m != kNoIndex ? m : a);
+      if (m != kNoIndex && (a == v || b == v)) out.split_edges.push_back({m, a == v ? b : a});
+      if (m == v) {
+        add(a);
+        add(b);
+      }
+    }
+  }
+  return out;
+}
+
+struct Nearest {
+  double fraction = 1.0;  // of the edge, from v
+  Crossing crossing;
+  bool found = false;
+};
+
+class Mover {
+ public:
+  Mover(Grid& grid, double clearance) : grid_(grid), clearance_(clearance) {}
+  std::array<Index, 2> run();
+
+ private:
+  enum State : std::uint8_t { none, pending, done };
+  std::vector<Crossing> transversal(const Vec3& a, const Vec3& b) const {
+    std::vector<Crossing> out = grid_.domain->crossings(a, b);
+    out.erase(std::remove_if(out.begin(), out.end(), [](const Crossing& c) { return c.before == c.after; }),
+              out.end());
+    return out;
+  }
+  bool acceptable(Index v, const Vec3& p, Index region, const Around& around,
+                  const std::vector<double>& far_before) const;
+  bool move(Index v);
+
+  Grid& grid_;
+  double clearance_;
+  std::vector<State> state_;
+};
+
+// A new position p (region `region`) is acceptable when every edge at v is crossed as its end
+// regions require, at least the clearance away from p, and no closer to the far end than
+// before unless that end is still to be moved; and split leaf edges keep one change of region.
+bool Mover::acceptable(Index v, const Vec3& p, Index region, const Around& around,
+                       const std::vector<double>& far_before) const {
+  for (const auto& [m, far] : around.split_edges)
+    if (region != grid_.region[m] && grid_.region[m] != grid_.region[far]) return false;
+  const std::vector<Index>& ends = around.ends;
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const Index w = ends[k];
+    const std::vector<Crossing> hits = transversal(p, grid_.position[w]);
+    if (region == grid_.region[w]) {
+      if (!hits.empty()) return false;
+      continue;
+    }
+    if (hits.size() != 1 || hits[0].t < clearance_) return false;
+    const double far = 1.0 - hits[0].t;
+    if (far < clearance_ && far < far_before[k] && state_[w] != pending) return false;
+  }
+  return true;
+}
+
+bool Mover::move(Index v) {
+  const Around around = around_vertex(grid_, v);
+  const std::vector<Index>& ends = around.ends;
+  const Vec3 x = grid_.position[v];
+  Nearest nearest;
+  std::vector<double> far_before(ends.size(), 1.0);
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const Vec3& y = grid_.position[ends[k]];
+    shortest = std::min(shortest, (y - x).norm());
+    const std::vector<Crossing> hits = transversal(x, y);
+    if (hits.empty()) continue;
+    far_before[k] = 1.0 - hits.back().t;
+    if (grid_.region[ends[k]] == grid_.region[v]) continue;
+    if (!nearest.found || hits.front().t < nearest.fraction) nearest = {hits.front().t, hits.front(), true};
+  }
+  if (!nearest.found || nearest.fraction >= clearance_) return true;
+
+  // The normal points from v's side into the other region.
+  const Vec3 n = nearest.crossing.normal;
+  const double distance = 1.5 * clearance_ * shortest;
+  const Vec3 across = nearest.crossing.point + distance * n;
+  const Vec3 away = nearest.crossing.point - distance * n;
+  const Index own = grid_.region[v], other = nearest.crossing.after;
+  // Across the interface when that leaves the vertex outside: the kept pieces then grow. A
+  // midpoint vertex keeps its region (its leaf edge would change region twice).
+  const bool hanging = grid_.vertices.hanging[v] != 0;
+  const std::array<Vec3, 2> order = other == 0 && own != 0 && !hanging ? std::array{across, away} : std::array{away, across};
+  for (const Vec3& p : order) {
+    const Index region = grid_.domain->region(p);
+    if (hanging && region != own) continue;
+    if (acceptable(v, p, region, around, far_before)) {
+      grid_.position[v] = p;
+      grid_.region[v] = region;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::array<Index, 2> Mover::run() {
+  state_.assign(grid_.position.size(), none);
+  for (std::size_t e = 0; e < grid_.edges.size(); ++e) {
+    const auto [a, b] = grid_.edges[e];
+    if (grid_.region[a] == grid_.region[b]) continue;
+    const Vec3 &pa = grid_.position[a], &pb = grid_.position[b];
+    const double t = (grid_.edge_point[e].point - pa).dot(pb - pa) / (pb - pa).squaredNorm();
+    if (t < clearance_) state_[a] = pending;
+    if (t > 1.0 - clearance_) state_[b] = pending;
+  }
+  Index moved = 0, unresolved = 0;
+  for (Index v = 0; v < static_cast<Index>(state_.size()); ++v) {
+    if (state_[v] != pending) continue;
+    const Vec3 before = grid_.position[v];
+    if (!move(v)) ++unresolved;
+    if (grid_.position[v] != before) ++moved;
+    state_[v] = done;
+  }
+  return {moved, unresolved};
+}
+
+}  // namespace
+
+std::array<Index, 2> move_vertices(Grid& grid, double clearance) { return Mover(grid, clearance).run(); }
+
+}  // namespace volmesh::cutcell

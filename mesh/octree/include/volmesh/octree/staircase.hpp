@@ -1,0 +1,40 @@
+#pragma once
+// The staircase mesher (DESIGN.md §4): the octree refined toward the boundaries and
+// interfaces, each leaf kept as a cube when its centre lies in a region (region 0 dropped).
+// The first-order baseline the cut-cell convergence studies compare against.
+#include <functional>
+#include <string>
+
+#include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/domain/domain.hpp"
+#include "volmesh/octree/octree.hpp"
+
+namespace volmesh {
+
+struct StaircaseOptions {
+  OctreeOptions octree;
+  // Called from the calling thread as each stage starts ("octree", "cells", then "done"),
+  // with a rough fraction of the run done.
+  std::function<void(const std::string& stage, double fraction)> progress;
+};
+
+struct StaircaseStats {
+  int level = 0;
+  Index leaves = 0, cells = 0, faces = 0, vertices = 0;
+  double octree_seconds = 0.0, mesh_seconds = 0.0, total_seconds = 0.0;
+};
+
+// A cell per kept leaf, in Morton order, region = the region at its centre. A face per
+// same-size pair, per small side of a big/small pair (a big leaf next to four small ones has
+// four faces there), and per leaf side facing a dropped leaf or the root boundary. Every
+// face lists every mesh vertex on its edges, so each cell closes edge by edge. Boundary
+// faces are tagged domain.surface_name(face centre), or "boundary" when unnamed; faces
+// between two regions stay internal. Throws InputError (octree limits, or no cell centre
+// inside the domain: the domain is thinner than a cell at this level).
+PolyMesh staircase_mesh(const Domain& domain, const StaircaseOptions& options,
+                        StaircaseStats* stats = nullptr);
+
+// The same cells for a given balanced tree (leaves kept by the region at their centre).
+PolyMesh staircase_cells(const Octree& tree, const Domain& domain);
+
+}  // namespace volmesh

@@ -1,0 +1,225 @@
+// The leaf table: Morton order, locational-code hash, neighbour queries.
+#include "volmesh/octree/octree.hpp"
+
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "volmesh/core/errors.hpp"
+
+namespace volmesh {
+
+namespace {
+
+bool aligned(const GridPoint& anchor, int level) {
+  const std::uint32_t mask = (kOctreeGrid >> level) - 1;
+  return ((anchor[0] | anchor[1] | anchor[2]) & mask) == 0;
+}
+
+// The other two axes of `axis`, in increasing order.
+std::array<int, 2> other_axes(int axis) {
+  return axis == 0 ? std::array{1, 2} : axis == 1 ? std::array{0, 2} : std::array{0, 1};
+}
+
+}  // namespace
+
+Octree::Octree(const Vec3& origin, double root_size)
+    : Octree(origin, root_size, {OctreeLeaf{{0, 0, 0}, 0}}) {}
+
+Octree::Octree(const Vec3& origin, double root_size, std::vector<OctreeLeaf> leaves)
+    : origin_(origin), root_size_(root_size), leaves_(std::move(leaves)) {
+  if (!(root_size > 0.0) || !std::isfinite(root_size) || !origin.allFinite())
+    throw InputError("octree: the root cube must have a finite positive size");
+  if (leaves_.size() > static_cast<std::size_t>(kMaxIndex))
+    throw InputError("octree: " + std::to_string(leaves_.size()) +
+                     " leaves exceed the index limit " + std::to_string(kMaxIndex));
+  for (const OctreeLeaf& l : leaves_)
+    if (l.level < 0 || l.level > kOctreeMaxLevel || !aligned(l.anchor, l.level) ||
+        l.anchor[0] >= kOctreeGrid || l.anchor[1] >= kOctreeGrid || l.anchor[2] >= kOctreeGrid)
+      throw InputError("octree: a leaf of level " + std::to_string(l.level) +
+                       " is not aligned on its level's grid inside the root");
+  std::vector<std::pair<std::uint64_t, OctreeLeaf>> keyed(leaves_.size());
+  tbb::parallel_for(std::size_t{0}, leaves_.size(), [&](std::size_t i) {
+    keyed[i] = {morton_encode(leaves_[i].anchor), leaves_[i]};
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < keyed.size(); ++i) leaves_[i] = keyed[i].second;
+  // Each leaf covers the Morton range [code, code + size^3): they tile the root exactly when
+  // the ranges follow each other from 0 to 2^60.
+  std::uint64_t next = 0;
+  for (const OctreeLeaf& l : leaves_) {
+    const std::uint64_t size = l.size();
+    if (morton_encode(l.anchor) != next)
+      throw InputError("octree: the leaves overlap or leave a gap (they must tile the root)");
+    next += size * size * size;
+  }
+  if (next != std::uint64_t{1} << (3 * kOctreeMaxLevel))
+    throw InputError("octree: the leaves do not cover the root");
+  leaves_changed();
+}
+
+void Octree::leaves_changed() {
+  morton_.resize(leaves_.size());
+  tbb::parallel_for(std::size_t{0}, leaves_.size(),
+                    [&](std::size_t i) { morton_[i] = morton_encode(leaves_[i].anchor); });
+  by_code_ = std::make_shared<CodeIndex>();
+}
+
+const KeyMap& Octree::by_code() const {
+  std::call_once(by_code_->built, [this] {
+    KeyMap& map = by_code_->map;
+    map.reserve(leaves_.size());
+    for (std::size_t i = 0; i < leaves_.size(); ++i)
+      map.insert(octree_code(leaves_[i].anchor, leaves_[i].level), static_cast<Index>(i));
+  });
+  return by_code_->map;
+}
+
+double Octree::cell_size(int level) const { return std::ldexp(root_size_, -level); }
+
+Vec3 Octree::world(const GridPoint& p) const {
+  const double scale = root_size_ / kOctreeGrid;
+  return origin_ + scale * Vec3(p[0], p[1], p[2]);
+}
+
+int Octree::max_leaf_level() const {
+  int level = 0;
+  for (const OctreeLeaf& l : leaves_) level = std::max(level, l.level);
+  return level;
+}
+
+Index Octree::find_leaf(const GridPoint& anchor, int level) const {
+  if (level < 0 || level > kOctreeMaxLevel || !aligned(anchor, level) ||
+      anchor[0] >= kOctreeGrid || anchor[1] >= kOctreeGrid || anchor[2] >= kOctreeGrid)
+    return kNoIndex;
+  return by_code().find(octree_code(anchor, level));
+}
+
+Index Octree::leaf_containing(const GridPoint& p) const {
+  if (p[0] >= kOctreeGrid || p[1] >= kOctreeGrid || p[2] >= kOctreeGrid) return kNoIndex;
+  const auto it = std::upper_bound(morton_.begin(), morton_.end(), morton_encode(p));
+  return static_cast<Index>(it - morton_.begin()) - 1;
+}
+
+FaceNeighbours Octree::face_neighbours(Index leaf, int face) const {
+  const OctreeLeaf& c = leaves_[leaf];
+  const int axis = face / 2;
+  const bool high = face & 1;
+  const std::uint32_t s = c.size();
+  FaceNeighbours result;
+  if (high ? c.anchor[axis] + s == kOctreeGrid : c.anchor[axis] == 0) return result;
+
+  GridPoint same = c.anchor;
+  same[axis] = high ? c.anchor[axis] + s : c.anchor[axis] - s;
+  if (const Index d = find_leaf(same, c.level); d != kNoIndex) {
+    result.kind = FaceKind::Same;
+    result.leaves[0] = d;
+    return result;
+  }
+  const Index container = leaf_containing(same);
+  if (leaves_[container].level < c.level) {
+    result.kind = FaceKind::Coarser;
+    result.leaves[0] = container;
+    return result;
+  }
+  // Finer: the leaf touching each quarter of the face at the quarter's low corner.
+  result.kind = FaceKind::Finer;
+  const auto [u, v] = other_axes(axis);
+  const std::uint32_t half = s / 2;
+  for (int q = 0; q < 4; ++q) {
+    GridPoint p = same;
+    p[axis] = high ? c.anchor[axis] + s : c.anchor[axis] - half;
+    p[u] += (q & 1) * half;
+    p[v] += (q >> 1) * half;
+    Index d = find_leaf(p, c.level + 1);
+    if (d == kNoIndex) {
+      if (!high) p[axis] = c.anchor[axis] - 1;
+      d = leaf_containing(p);
+    }
+    result.leaves[q] = d;
+  }
+  return result;
+}
+
+EdgeNeighbours Octree::edge_neighbours(Index leaf, int edge) const {
+  const OctreeLeaf& c = leaves_[leaf];
+  const int axis = edge / 4;
+  const auto [u, v] = other_axes(axis);
+  const bool high_u = edge & 1, high_v = edge >> 1 & 1;
+  const std::uint32_t s = c.size();
+  EdgeNeighbours result;
+  if (high_u ? c.anchor[u] + s == kOctreeGrid : c.anchor[u] == 0) return result;
+  if (high_v ? c.anchor[v] + s == kOctreeGrid : c.anchor[v] == 0) return result;
+
+  GridPoint same = c.anchor;
+  same[u] = high_u ? c.anchor[u] + s : c.anchor[u] - s;
+  same[v] = high_v ? c.anchor[v] + s : c.anchor[v] - s;
+  if (const Index d = find_leaf(same, c.level); d != kNoIndex) {
+    result.kind = FaceKind::Same;
+    result.leaves[0] = d;
+    return result;
+  }
+  const Index container = leaf_containing(same);
+  if (leaves_[container].level < c.level) {
+    result.kind = FaceKind::Coarser;
+    result.leaves[0] = container;
+    return result;
+  }
+  result.kind = FaceKind::Finer;
+  const std::uint32_t half = s / 2;
+  for (int k = 0; k < 2; ++k) {
+    GridPoint p = same;
+    p[axis] += k * half;
+    p[u] = high_u ? c.anchor[u] + s : c.anchor[u] - half;
+    p[v] = high_v ? c.anchor[v] + s : c.anchor[v] - half;
+    Index d = find_leaf(p, c.level + 1);
+    if (d == kNoIndex) {
+      if (!high_u) p[u] = c.anchor[u] - 1;
+      if (!high_v) p[v] = c.anchor[v] - 1;
+      d = leaf_containing(p);
+    }
+    result.leaves[k] = d;
+  }
+  return result;
+}
+
+void Octree::split(std::span<const Index> which) {
+  if (which.empty()) return;
+  std::vector<std::uint8_t> split_leaf(leaves_.size(), 0);
+  for (const Index i : which) {
+    if (leaves_[i].level >= kOctreeMaxLevel)
+      throw InputError("octree: cannot split a leaf of the maximum level " +
+                       std::to_string(kOctreeMaxLevel));
+    split_leaf[i] = 1;
+  }
+  std::size_t count = leaves_.size();
+  for (const std::uint8_t f : split_leaf) count += 7 * f;
+  if (count > static_cast<std::size_t>(kMaxIndex))
+    throw InputError("octree: refining to " + std::to_string(count) +
+                     " leaves exceeds the index limit " + std::to_string(kMaxIndex) +
+                     "; lower the level");
+  // Children occupy their parent's Morton range in child order (x bit lowest), so emitting
+  // them in place keeps the Morton order.
+  std::vector<OctreeLeaf> next;
+  next.reserve(count);
+  for (std::size_t i = 0; i < leaves_.size(); ++i) {
+    const OctreeLeaf& c = leaves_[i];
+    if (!split_leaf[i]) {
+      next.push_back(c);
+      continue;
+    }
+    const std::uint32_t half = c.size() / 2;
+    for (int k = 0; k < 8; ++k)
+      next.push_back({{c.anchor[0] + (k & 1) * half, c.anchor[1] + (k >> 1 & 1) * half,
+                       c.anchor[2] + (k >> 2 & 1) * half},
+                      c.level + 1});
+  }
+  leaves_ = std::move(next);
+  leaves_changed();
+}
+
+}  // namespace volmesh

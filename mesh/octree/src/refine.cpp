@@ -1,0 +1,244 @@
+// Refinement: the generic predicate fixpoint, the interface criterion, fronts, build_octree.
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "volmesh/core/errors.hpp"
+#include "volmesh/octree/octree.hpp"
+
+namespace volmesh {
+
+namespace {
+
+// Leaves (by index) whose flag is set, in Morton order.
+std::vector<Index> flagged(const std::vector<std::uint8_t>& flags) {
+  std::vector<Index> result;
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) result.push_back(static_cast<Index>(i));
+  return result;
+}
+
+// Batches keep the crossing lists of one batch in memory at a time.
+constexpr std::size_t kBatch = std::size_t{1} << 16;
+
+// Regions of grid points, remembered across passes (children share their parent's corners).
+class RegionCache {
+ public:
+  // `tree` is the tree being refined: it changes between fills, only its root matters.
+  RegionCache(const Octree& tree, const Domain& domain) : tree_(tree), domain_(domain) {}
+
+  // Queries the points not seen yet, batched on both cores.
+  void fill(std::vector<std::uint64_t> codes) {
+    tbb::parallel_sort(codes.begin(), codes.end());
+    codes.erase(std::unique(codes.begin(), codes.end()), codes.end());
+    std::vector<std::uint64_t> missing;
+    for (const std::uint64_t c : codes)
+      if (known_.find(c) == kNoIndex) missing.push_back(c);
+    std::vector<Vec3> points(missing.size());
+    tbb::parallel_for(std::size_t{0}, missing.size(),
+                      [&](std::size_t i) { points[i] = tree_.world(morton_decode(missing[i])); });
+    std::vector<Index> regions(missing.size());
+    domain_.region(points, regions);
+    known_.reserve(known_.size() + missing.size());
+    for (std::size_t i = 0; i < missing.size(); ++i) known_.insert(missing[i], regions[i]);
+  }
+  Index operator()(const GridPoint& p) const { return known_.find(morton_encode(p)); }
+
+ private:
+  const Octree& tree_;
+  const Domain& domain_;
+  KeyMap known_;
+};
+
+// An edge of a leaf as a sortable key: low end, axis, level.
+struct EdgeKey {
+  std::uint64_t low;
+  std::uint32_t axis_level;
+  bool operator<(const EdgeKey& o) const {
+    return low != o.low ? low < o.low : axis_level < o.axis_level;
+  }
+  bool operator==(const EdgeKey& o) const = default;
+};
+
+// Which of `candidates` have corners in different regions or an edge crossed by an interface.
+std::vector<std::uint8_t> interface_leaves(const Octree& tree, RegionCache& regions,
+                                           const Domain& domain,
+                                           const std::vector<Index>& candidates) {
+  const std::size_t n = candidates.size();
+  std::vector<std::uint64_t> corner_codes(8 * n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    const OctreeLeaf& leaf = tree.leaf(candidates[i]);
+    for (int k = 0; k < 8; ++k) corner_codes[8 * i + k] = morton_encode(leaf.corner(k));
+  });
+  regions.fill(std::move(corner_codes));
+
+  std::vector<std::uint8_t> selected(n, 0);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    const OctreeLeaf& leaf = tree.leaf(candidates[i]);
+    const Index r0 = regions(leaf.corner(0));
+    for (int k = 1; k < 8 && !selected[i]; ++k) selected[i] = regions(leaf.corner(k)) != r0;
+  });
+
+  // Uniform corners: the leaf is still cut when an edge is crossed (twice, or touched).
+  std::vector<std::size_t> uniform;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!selected[i]) uniform.push_back(i);
+  std::vector<std::pair<EdgeKey, std::uint32_t>> edges(12 * uniform.size());
+  tbb::parallel_for(std::size_t{0}, uniform.size(), [&](std::size_t j) {
+    const OctreeLeaf& leaf = tree.leaf(candidates[uniform[j]]);
+    for (int e = 0; e < 12; ++e)
+      edges[12 * j + e] = {{morton_encode(leaf.corner(kEdgeCorners[e][0])),
+                            static_cast<std::uint32_t>(e / 4 * 32 + leaf.level)},
+                           static_cast<std::uint32_t>(j)};
+  });
+  tbb::parallel_sort(edges.begin(), edges.end());
+  std::vector<std::size_t> first;  // start of each distinct edge in `edges`
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    if (k == 0 || !(edges[k].first == edges[k - 1].first)) first.push_back(k);
+
+  std::vector<Vec3> a, b;
+  std::vector<std::vector<Crossing>> hits;
+  for (std::size_t start = 0; start < first.size(); start += kBatch) {
+    const std::size_t end = std::min(first.size(), start + kBatch);
+    a.resize(end - start);
+    b.resize(end - start);
+    tbb::parallel_for(start, end, [&](std::size_t k) {
+      const EdgeKey& key = edges[first[k]].first;
+      const GridPoint lo = morton_decode(key.low);
+      const int axis = static_cast<int>(key.axis_level / 32);
+      GridPoint hi = lo;
+      hi[axis] += kOctreeGrid >> (key.axis_level % 32);
+      a[k - start] = tree.world(lo);
+      b[k - start] = tree.world(hi);
+    });
+    domain.crossings(a, b, hits);
+    for (std::size_t k = start; k < end; ++k) {
+      if (hits[k - start].empty()) continue;
+      const std::size_t stop = k + 1 < first.size() ? first[k + 1] : edges.size();
+      for (std::size_t m = first[k]; m < stop; ++m) selected[uniform[edges[m].second]] = 1;
+    }
+  }
+  return selected;
+}
+
+void check_level(int level) {
+  if (level > kOctreeMaxLevel)
+    throw InputError("--level " + std::to_string(level) + " exceeds the maximum " +
+                     std::to_string(kOctreeMaxLevel));
+  if (level < 0) throw InputError("--level " + std::to_string(level) + " is negative");
+}
+
+}  // namespace
+
+int refine(Octree& tree, const LeafPredicate& select, int max_level) {
+  check_level(max_level);
+  int passes = 0;
+  for (;;) {
+    std::vector<std::uint8_t> flags(tree.num_leaves(), 0);
+    tbb::parallel_for(Index{0}, tree.num_leaves(), [&](Index i) {
+      flags[i] = tree.leaf(i).level < max_level && select(tree, i);
+    });
+    const std::vector<Index> chosen = flagged(flags);
+    if (chosen.empty()) return passes;
+    tree.split(chosen);
+    balance(tree);
+    ++passes;
+  }
+}
+
+void refine_toward(Octree& tree, const Domain& domain, int level) {
+  check_level(level);
+  RegionCache regions(tree, domain);
+  // Per leaf: evaluated and not cut. The criterion depends on the leaf alone, so such a
+  // leaf is never evaluated again; flags follow the leaves through splits and balancing.
+  std::vector<std::uint8_t> uncut(tree.num_leaves(), 0);
+  for (;;) {
+    std::vector<Index> candidates;
+    for (Index i = 0; i < tree.num_leaves(); ++i)
+      if (tree.leaf(i).level < level && !uncut[i]) candidates.push_back(i);
+    const std::vector<std::uint8_t> selected =
+        interface_leaves(tree, regions, domain, candidates);
+    std::vector<Index> chosen;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (selected[i])
+        chosen.push_back(candidates[i]);
+      else
+        uncut[candidates[i]] = 1;
+    }
+    std::vector<std::uint8_t> next;
+    if (!chosen.empty()) {
+      // Split leaves are replaced in place by their eight children.
+      next.reserve(uncut.size() + 7 * chosen.size());
+      std::size_t k = 0;
+      for (Index i = 0; i < tree.num_leaves(); ++i) {
+        if (k < chosen.size() && chosen[k] == i) {
+          next.insert(next.end(), 8, 0);
+          ++k;
+        } else {
+          next.push_back(uncut[i]);
+        }
+      }
+      tree.split(chosen);
+    } else {
+      // Balancing may create new leaves below `level` near the interface: check those too.
+      const std::vector<OctreeLeaf> before(tree.leaves().begin(), tree.leaves().end());
+      balance(tree);
+      if (tree.num_leaves() == static_cast<Index>(before.size())) return;
+      // Balancing only splits, so a surviving leaf keeps its Morton position among the new.
+      next.assign(tree.num_leaves(), 0);
+      std::size_t i = 0;
+      for (Index j = 0; j < tree.num_leaves(); ++j) {
+        const OctreeLeaf& l = tree.leaf(j);
+        const std::uint64_t code = morton_encode(l.anchor);
+        while (i < before.size() && morton_encode(before[i].anchor) < code) ++i;
+        if (i < before.size() && before[i].anchor == l.anchor && before[i].level == l.level)
+          next[j] = uncut[i];
+      }
+    }
+    uncut = std::move(next);
+  }
+}
+
+Octree build_octree(const Domain& domain, const OctreeOptions& options) {
+  check_level(options.level);
+  if (options.level == 0)
+    throw InputError("--level 0: the domain is smaller than one cell (the root cube); use a "
+                     "level of at least 1");
+  for (const BoxFront& f : options.boxes) check_level(f.level);
+  for (const SurfaceFront& f : options.surfaces) {
+    check_level(f.level);
+    if (!f.surface) throw InputError("octree: a surface front without a surface");
+  }
+  if (!(options.margin >= 0.0) || !std::isfinite(options.margin))
+    throw InputError("octree: the margin must be a non-negative number");
+
+  const Box3 box = domain.bounds();
+  const Vec3 extent = box.size();
+  if (!box.lo.allFinite() || !box.hi.allFinite() || !(extent.minCoeff() >= 0.0) ||
+      !(extent.maxCoeff() > 0.0))
+    throw InputError("domain: empty or unbounded bounding box; nothing to mesh");
+  const double side = extent.maxCoeff() * (1.0 + 2.0 * options.margin);
+  Octree tree(box.centre() - Vec3::Constant(0.5 * side), side);
+
+  const int base = std::min(options.base_level, options.level);
+  refine(tree, [base](const Octree&, Index) { return true; }, std::max(base, 0));
+  refine_toward(tree, domain, options.level);
+  for (const BoxFront& f : options.boxes) {
+    refine(
+        tree,
+        [&f](const Octree& t, Index i) {
+          const OctreeLeaf& leaf = t.leaf(i);
+          const Vec3 lo = t.world(leaf.anchor), hi = t.world(leaf.corner(7));
+          return (lo.array() < f.box.hi.array()).all() && (hi.array() > f.box.lo.array()).all();
+        },
+        f.level);
+  }
+  for (const SurfaceFront& f : options.surfaces) refine_toward(tree, *f.surface, f.level);
+  return tree;
+}
+
+}  // namespace volmesh

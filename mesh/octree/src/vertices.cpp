@@ -1,0 +1,127 @@
+// Mesh vertices of the octree: leaf corners deduplicated by Morton code.
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <bit>
+#include <string>
+
+#include "vertex_table.hpp"
+#include "volmesh/core/errors.hpp"
+
+namespace volmesh {
+
+namespace {
+
+// Marks vertex `id` at p hanging when it lies inside an edge or a face of a leaf, and records
+// it as that leaf's mid-edge vertex. On a balanced tree such a leaf is one level coarser than
+// the finest grid p lies on, and p is the midpoint of its edge (one coordinate off that
+// coarser grid) or the centre of its face (two), so a few lookups around p settle it.
+void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVertices& v) {
+  int zeros = kOctreeMaxLevel;  // trailing zeros common to the coordinates (0 counts as all)
+  for (const std::uint32_t x : p)
+    if (x != 0) zeros = std::min(zeros, std::countr_zero(x));
+  if (zeros >= kOctreeMaxLevel) return;  // a root corner
+  const int level = kOctreeMaxLevel - zeros - 1;  // of the coarser leaves around p
+  const std::int64_t big = std::int64_t{2} << zeros, half = std::int64_t{1} << zeros;
+  std::array<bool, 3> off;
+  int count = 0;
+  for (int a = 0; a < 3; ++a) count += off[a] = (p[a] >> zeros & 1) != 0;
+  if (count == 3) return;  // the centre of a coarser cell: never on a leaf's boundary
+
+  auto leaf_at = [&](const std::array<std::int64_t, 3>& anchor) {
+    for (const std::int64_t x : anchor)
+      if (x < 0 || x >= kOctreeGrid) return kNoIndex;
+    return tree.find_leaf({static_cast<std::uint32_t>(anchor[0]),
+                           static_cast<std::uint32_t>(anchor[1]),
+                           static_cast<std::uint32_t>(anchor[2])},
+                          level);
+  };
+  bool hanging = false;
+  if (count == 1) {  // the midpoint of an edge along `axis`, shared by four coarser cells
+    const int axis = off[0] ? 0 : off[1] ? 1 : 2;
+    const int u = axis == 0 ? 1 : 0, v_axis = axis == 2 ? 1 : 2;
+    for (int k = 0; k < 4; ++k) {
+      const int bu = k & 1, bv = k >> 1;  // the edge's position in the cell
+      std::array<std::int64_t, 3> anchor{p[0], p[1], p[2]};
+      anchor[axis] -= half;
+      anchor[u] -= bu * big;
+      anchor[v_axis] -= bv * big;
+      const Index leaf = leaf_at(anchor);
+      if (leaf == kNoIndex) continue;
+      v.leaf_edge_mid[leaf][4 * axis + bu + 2 * bv] = id;
+      hanging = true;
+    }
+  } else {  // the centre of a face normal to `axis`, shared by two coarser cells
+    const int axis = !off[0] ? 0 : !off[1] ? 1 : 2;
+    for (int side = 0; side < 2; ++side) {
+      std::array<std::int64_t, 3> anchor{p[0] - half, p[1] - half, p[2] - half};
+      anchor[axis] = p[axis] - side * big;
+      hanging = hanging || leaf_at(anchor) != kNoIndex;
+    }
+  }
+  v.hanging[id] = hanging;
+}
+
+}  // namespace
+
+OctreeVertices octree_vertex_geometry(const Octree& tree) {
+  const std::size_t n = tree.leaves().size();
+  // Every leaf corner with its (leaf, corner) slot, sorted by Morton code: equal codes are
+  // one vertex.
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> corners(8 * n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    for (int k = 0; k < 8; ++k) corners[8 * i + k] = {morton_encode(tree.leaf(i).corner(k)), 8 * i + k};
+  });
+  tbb::parallel_sort(corners.begin(), corners.end());
+  OctreeVertices v;
+  v.leaf_corners.resize(n);
+  std::vector<std::uint64_t> codes;
+  for (const auto& [code, slot] : corners) {
+    if (codes.empty() || codes.back() != code) codes.push_back(code);
+    v.leaf_corners[slot / 8][slot % 8] = static_cast<Index>(codes.size() - 1);
+  }
+  corners = {};
+  if (codes.size() > static_cast<std::size_t>(kMaxIndex))
+    throw InputError("octree: " + std::to_string(codes.size()) +
+                     " vertices exceed the index limit " + std::to_string(kMaxIndex) +
+                     "; lower the level");
+
+  const std::size_t nv = codes.size();
+  v.coords.resize(nv);
+  v.points.resize(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
+    v.coords[i] = morton_decode(codes[i]);
+    v.points[i] = tree.world(v.coords[i]);
+  });
+  v.by_code.reserve(nv);
+  for (std::size_t i = 0; i < nv; ++i) v.by_code.insert(codes[i], static_cast<Index>(i));
+
+  std::array<Index, 12> none;
+  none.fill(kNoIndex);
+  v.leaf_edge_mid.assign(n, none);
+  v.hanging.assign(nv, 0);
+  // Each (leaf, edge) has one midpoint, so no two vertices write the same entry.
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
+    classify_vertex(tree, static_cast<Index>(i), v.coords[i], v);
+  });
+  return v;
+}
+
+OctreeVertices octree_vertices(const Octree& tree, const Domain& domain) {
+  OctreeVertices v = octree_vertex_geometry(tree);
+  v.region.resize(v.points.size());
+  domain.region(v.points, v.region);
+  return v;
+}
+
+void leaf_face_loop(const OctreeVertices& vertices, Index leaf, int face,
+                    std::vector<Index>& out) {
+  for (int i = 0; i < 4; ++i) {
+    out.push_back(vertices.leaf_corners[leaf][kFaceCorners[face][i]]);
+    const Index mid = vertices.leaf_edge_mid[leaf][kFaceEdges[face][i]];
+    if (mid != kNoIndex) out.push_back(mid);
+  }
+}
+
+}  // namespace volmesh

@@ -1,0 +1,124 @@
+// volmesh mesh end to end: outputs re-read by the readers, --json fields, determinism,
+// OpenFOAM's checkMesh on a staircase case, and the refusals (exit 1 or 2, no output).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "run_volmesh.hpp"
+#include "volmesh/core/validity.hpp"
+#include "volmesh/io/mesh_io.hpp"
+
+namespace volmesh {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_volmesh;
+
+TEST(CliMesh, StaircaseWritesAValidMeshAndReportsJson) {
+  const fs::path dir = test::scratch_dir("mesh-staircase");
+  const fs::path out = dir / "ball.vtu";
+  const auto r = run_volmesh("mesh staircase builtin:ball --level 4 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "staircase");
+  EXPECT_EQ(j["domain"], "builtin:ball");
+  EXPECT_EQ(j["level"], 4);
+  EXPECT_GE(j["time_seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(j["validity"]["valid"].get<bool>());
+  const PolyMesh mesh = read_mesh(out);
+  EXPECT_TRUE(check_validity(mesh).valid());
+  EXPECT_EQ(j["cells"], mesh.num_cells());
+  EXPECT_EQ(j["faces"], mesh.num_faces());
+  EXPECT_EQ(j["vertices"], mesh.num_points());
+  ASSERT_TRUE(j["regions"].contains("1"));
+  EXPECT_EQ(j["regions"]["1"]["cells"], mesh.num_cells());
+  EXPECT_NEAR(j["regions"]["1"]["volume"].get<double>(), 4.0 * std::numbers::pi / 3.0, 0.1);
+}
+
+TEST(CliMesh, SameBytesForOneAndTwoThreads) {
+  const fs::path dir = test::scratch_dir("mesh-threads");
+  for (const char* t : {"1", "2"}) {
+    const auto r = run_volmesh(std::string("mesh staircase builtin:primitives --level 4 --threads ") +
+                                   t + " -o " + (dir / (std::string("p") + t + ".vtu")).string(),
+                               dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(test::slurp(dir / "p1.vtu"), test::slurp(dir / "p2.vtu"));
+}
+
+TEST(CliMesh, GridHexesAndKuhnTets) {
+  const fs::path dir = test::scratch_dir("mesh-grid");
+  auto r = run_volmesh("mesh grid builtin:box --level 2 -o " + (dir / "hex.msh").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const PolyMesh hexes = read_mesh(dir / "hex.msh");
+  EXPECT_EQ(hexes.num_cells(), 64);
+  EXPECT_NEAR(check_validity(hexes).total_volume, 1.0, 1e-12);
+  std::vector<std::string> tags = hexes.tag_names;
+  std::sort(tags.begin(), tags.end());
+  EXPECT_EQ(tags, (std::vector<std::string>{"xmax", "xmin", "ymax", "ymin", "zmax", "zmin"}));
+
+  r = run_volmesh("mesh grid builtin:box --level 2 --tets --json -o " + (dir / "tet.vtu").string(),
+                  dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["cells"], 6 * 64);
+  const PolyMesh tets = read_mesh(dir / "tet.vtu");
+  EXPECT_EQ(tets.num_cells(), 6 * 64);
+  EXPECT_NEAR(check_validity(tets).total_volume, 1.0, 1e-12);
+}
+
+TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
+  const fs::path dir = test::scratch_dir("mesh-foam");
+  const fs::path out = dir / "ball.foam";
+  const auto r = run_volmesh("mesh staircase builtin:ball --level 4 -o " + out.string() + "/", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
+  if (std::system("command -v checkMesh >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam (Debian package)";
+  const fs::path log = dir / "checkMesh.log";
+  std::system(("cd '" + dir.string() +
+               "' && WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\" checkMesh -case '" +
+               out.string() + "' >'" + log.string() + "' 2>&1")
+                  .c_str());
+  const std::string report = test::slurp(log);
+  EXPECT_NE(report.find("Mesh OK."), std::string::npos) << report;
+}
+
+TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
+  const fs::path dir = test::scratch_dir("mesh-bad");
+  const fs::path out = dir / "out.vtu";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"mesh staircase builtin:ball --level 25", "--level 25 exceeds the maximum 20"},
+      {"mesh staircase builtin:nosuch --level 3", "nosuch"},
+      {"mesh staircase " + (dir / "missing.stl").string() + " --level 3", "missing.stl"},
+      {"mesh grid builtin:box --level 11", "index limit"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = run_volmesh(args + " -o " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  const auto r = run_volmesh("mesh staircase builtin:ball --level 3 -o " + (dir / "x.txt").string(),
+                             dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir / "x.txt"));
+}
+
+TEST(CliMesh, BadUsageExitsWith2) {
+  const fs::path dir = test::scratch_dir("mesh-usage");
+  for (const std::string args :
+       {"mesh", "mesh nosuch builtin:ball -o x.vtu", "mesh staircase builtin:ball",
+        "mesh staircase builtin:ball -o x.vtu --level abc",
+        "mesh staircase builtin:ball -o x.vtu --tets",
+        "mesh staircase builtin:ball -o x.vtu --threads 0"}) {
+    const auto r = run_volmesh(args, dir);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x.vtu"));
+}
+
+}  // namespace
+}  // namespace volmesh
