@@ -38,7 +38,8 @@ ErrorNorms fv_errors(const PolyMesh& mesh, const FvSystem& s, const PoissonProbl
   tbb::parallel_for(Index{0}, nc, [&](Index c) {
     const Vec3& x = s.geometry.cells[c].centre;
     value_error[c] = problem.exact(x) - u[c];
-    if (problem.exact_gradient) gradient_error[c] = (problem.exact_gradient(x) - g[c]).squaredNorm();
+    if (problem.exact_gradient)
+      gradient_error[c] = (problem.exact_gradient(x) - g[c]).squaredNorm();
   });
   ErrorNorms e;
   double l2 = 0.0, linf = 0.0, h1 = 0.0;

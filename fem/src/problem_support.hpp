@@ -1,5 +1,6 @@
 #pragma once
 // Pieces shared by the named and the user problems.
+#include <map>
 #include <string>
 #include <vector>
 

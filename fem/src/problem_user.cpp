@@ -134,10 +134,13 @@ UserPoissonProblem user_poisson_problem(const std::string& exact_text,
   p.exact = exact;
   p.exact_gradient = [exact, h](const Vec3& x) { return finite_difference_gradient(exact, x, h); };
   p.boundary = on_every_tag(tags, {ScalarBoundaryCondition::Kind::dirichlet, exact});
-  if (p.source)
+  if (p.source) {
     user.warning = source_mismatch(exact, p.source, k, h, domain);
-  else
-    p.source = [exact, k, h](const Vec3& x) { return -k * finite_difference_laplacian(exact, x, h); };
+  } else {
+    p.source = [exact, k, h](const Vec3& x) {
+      return -k * finite_difference_laplacian(exact, x, h);
+    };
+  }
   return user;
 }
 

@@ -73,7 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
         PatchCase{"PlaneCutCells",
                   [] { return test::plane_cut_grid(4, Vec3(1.0, 0.6, 0.35), 0.93); }},
         PatchCase{"WarpedPlaneCutCells",
-                  [] { return warped(test::plane_cut_grid(4, Vec3(1.0, 0.6, 0.35), 0.93), 0.04); }}),
+                  [] {
+                    return warped(test::plane_cut_grid(4, Vec3(1.0, 0.6, 0.35), 0.93), 0.04);
+                  }}),
     [](const auto& info) { return info.param.name; });
 
 TEST(FvPatchOrthogonal, LinearSolutionIsExactWithoutCorrectionSolves) {

@@ -87,8 +87,9 @@ TEST(TrueBoundary, TiltedTorusIsExactAndTheNormalIterationAgrees) {
     const Vec3 in_plane = v - v.dot(axis) * axis;
     return centre + major * in_plane.normalized();
   };
-  const SurfaceCheck surface{[&](const Vec3& q) { return (q - tube_centre(q)).norm() - minor; },
-                             [&](const Vec3& q) -> Vec3 { return (q - tube_centre(q)).normalized(); }};
+  const SurfaceCheck surface{
+      [&](const Vec3& q) { return (q - tube_centre(q)).norm() - minor; },
+      [&](const Vec3& q) -> Vec3 { return (q - tube_centre(q)).normalized(); }};
   const Vec3 e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
   const PointMap map = true_boundary_map(domain);
   for (int i = 0; i < 300; ++i) {

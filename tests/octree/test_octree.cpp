@@ -27,7 +27,7 @@ std::vector<Index> leaves_overlapping(const Octree& tree, const GridPoint& lo,
 }
 
 Octree balanced_random_tree(unsigned seed) {
-  Octree tree = test::random_tree(seed, 4, 0.3, 6);
+  Octree tree = test::random_tree(seed, 4, 0.25, 6);
   balance(tree);
   return tree;
 }

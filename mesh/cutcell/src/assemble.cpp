@@ -111,17 +111,19 @@ void Assembler::emit_leaf(Index leaf, std::vector<FaceOut>& out) const {
   const Index c = cut_of_[leaf];
   if (c == kNoIndex) return;
   const CellSplit& split = cuts_[c].split;
-  for (const PieceTriangle& t : split.triangles) {
+  const auto interface = [&](auto points, int lower, int higher) {
     FaceOut o;
-    for (int p : t.points) o.loop.push_back(leaf_point(c, p));
-    o.owner = piece_cell_[c][t.higher];
-    o.neighbour = piece_cell_[c][t.lower];
+    for (int p : points) o.loop.push_back(leaf_point(c, p));
+    o.owner = piece_cell_[c][higher];
+    o.neighbour = piece_cell_[c][lower];
     if (o.neighbour == kNoIndex) {
       o.surface = true;
-      for (PointKey k : o.loop) o.centre += position(k) / 3.0;
+      for (PointKey k : o.loop) o.centre += position(k) / static_cast<double>(o.loop.size());
     }
     out.push_back(std::move(o));
-  }
+  };
+  for (const PieceTriangle& t : split.triangles) interface(t.points, t.lower, t.higher);
+  for (const PiecePolygon& p : split.polygons) interface(p.points, p.lower, p.higher);
 }
 
 PolyMesh Assembler::run(AssemblyStats& stats) {

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <cmath>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -41,6 +43,11 @@ struct UnionFind {
   }
 };
 
+struct Candidate {
+  LoopMethod method;
+  std::vector<Triangle> triangles;
+};
+
 struct Loop {
   std::vector<int> points;
   std::vector<int> segments;  // surface segments, normalised (lower label on the left)
@@ -71,11 +78,12 @@ class Splitter {
   }
   void build_loops();
   int cell_point(const std::vector<int>& face_points);
-  std::vector<Triangle> triangulate(const Loop& loop, LoopMethod& method);
+  std::vector<Candidate> candidates(const Loop& loop);
+  double worst_skewness(const std::vector<std::vector<Triangle>>& triangles) const;
   // The edge points of a loop with known normals.
   std::pair<std::vector<Vec3>, std::vector<Vec3>> fitted_points(const std::vector<int>& loop) const;
-  std::optional<std::vector<Triangle>> split_along_feature(const std::vector<int>& loop);
-  std::vector<Triangle> triangulate_smooth(const std::vector<int>& loop, LoopMethod& method);
+  void split_along_feature(const std::vector<int>& loop, std::vector<Candidate>& out);
+  void smooth_candidates(const std::vector<int>& loop, std::vector<Candidate>& out);
   int face_point_near(const Loop& loop, const Vec3& p) const;
   void build_pieces();
   // The pieces on the lower and the higher label's side of a component.
@@ -84,7 +92,9 @@ class Splitter {
     return {out_.polygon_piece[s.left_polygon], out_.polygon_piece[s.right_polygon]};
   }
   std::vector<Vec3> piece_centres(const std::vector<std::vector<Triangle>>& triangles) const;
-  double skewness(const Triangle& t, const Vec3& owner, const Vec3& neighbour, bool outside) const;
+  double skewness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour, bool outside) const;
+  void merge_skewed(std::vector<std::vector<Triangle>>& triangles);
+  static std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b);
   void flip_slivers(std::vector<std::vector<Triangle>>& triangles);
   void emit_triangles(const std::vector<std::vector<Triangle>>& triangles);
 
@@ -215,95 +225,89 @@ int Splitter::face_point_near(const Loop& loop, const Vec3& p) const {
   return -1;
 }
 
-std::vector<Triangle> Splitter::triangulate(const Loop& loop, LoopMethod& method) {
+// The ways to triangulate a component, the paper's choice first. Loops through the cell
+// interface point are fans around it; a sharp feature keeps its feature point or edge.
+std::vector<Candidate> Splitter::candidates(const Loop& loop) {
   if (loop.points.size() < 3) {
     // A path joining the two face interface points along a face: the link between them is
     // that segment (the paper's Fig. 10b), the component encloses nothing.
-    method = LoopMethod::degenerate;
-    return {};
+    return {{LoopMethod::degenerate, {}}};
   }
-  if (loop.through_cell_point) {
-    method = LoopMethod::interface_fan;
-    return triangulate_fan(loop.points, loop.points.back());
-  }
+  if (loop.through_cell_point)
+    return {{LoopMethod::interface_fan, triangulate_fan(loop.points, loop.points.back())}};
+  std::vector<Candidate> out;
   if (options_.exact_points) {
     const auto [s, n] = fitted_points(loop.points);
     if (s.size() >= 2)
       if (const auto feature = sharp_feature(s, n, options_.feature)) {
-        if (!feature->corner)
-          if (auto t = split_along_feature(loop.points)) {
-            method = LoopMethod::feature_split;
-            return std::move(*t);
-          }
+        if (!feature->corner) split_along_feature(loop.points, out);
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
-        if (const int on_face = face_point_near(loop, feature->point); on_face >= 0) {
-          method = LoopMethod::feature_fan;
-          return triangulate_fan(loop.points, on_face);
-        }
-        if (const auto p = clamp(feature->point, options_.feature_reach)) {
-          method = LoopMethod::feature_fan;
-          return triangulate_fan(loop.points, add_point(*p));
-        }
+        if (const int on_face = face_point_near(loop, feature->point); on_face >= 0)
+          out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
+        else if (const auto p = clamp(feature->point, options_.feature_reach))
+          out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, add_point(*p))});
+        if (!out.empty()) return out;
       }
   }
-  return triangulate_smooth(loop.points, method);
+  smooth_candidates(loop.points, out);
+  return out;
 }
 
 // A sharp edge crossing the cell enters and leaves it through two faces, at their CMS feature
 // points: the segment between them is the edge (exact when straight, O(h^2) off a curved one).
 // The component is split along it and each flat side triangulated on its own.
-std::optional<std::vector<Triangle>> Splitter::split_along_feature(const std::vector<int>& loop) {
+void Splitter::split_along_feature(const std::vector<int>& loop, std::vector<Candidate>& out) {
   const int n = static_cast<int>(loop.size());
   std::vector<int> at;
   for (int k = 0; k < n; ++k)
     if (loop[k] < static_cast<int>(in_.points.size()) && in_.points[loop[k]].kind == CellPointKind::face_feature)
       at.push_back(k);
-  if (at.size() != 2) return std::nullopt;
+  if (at.size() != 2) return;
   const int k1 = at[0], k2 = at[1];
-  if (k2 - k1 < 2 || n - (k2 - k1) < 2 || (faces_[loop[k1]] & faces_[loop[k2]]) != 0) return std::nullopt;
+  if (k2 - k1 < 2 || n - (k2 - k1) < 2 || (faces_[loop[k1]] & faces_[loop[k2]]) != 0) return;
   const std::vector<int> first(loop.begin() + k1, loop.begin() + k2 + 1);
   std::vector<int> second(loop.begin() + k2, loop.end());
   second.insert(second.end(), loop.begin(), loop.begin() + k1 + 1);
-  LoopMethod unused;
-  std::vector<Triangle> out = triangulate_smooth(first, unused);
-  const std::vector<Triangle> rest = triangulate_smooth(second, unused);
-  out.insert(out.end(), rest.begin(), rest.end());
-  return out;
+  std::vector<Candidate> a, b;
+  smooth_candidates(first, a);
+  smooth_candidates(second, b);
+  const auto join = [&](std::size_t i, std::size_t j) {
+    Candidate c{LoopMethod::feature_split, a[i].triangles};
+    c.triangles.insert(c.triangles.end(), b[j].triangles.begin(), b[j].triangles.end());
+    out.push_back(std::move(c));
+  };
+  join(0, 0);
+  for (std::size_t i = 1; i < a.size(); ++i) join(i, 0);
+  for (std::size_t j = 1; j < b.size(); ++j) join(0, j);
 }
 
-std::vector<Triangle> Splitter::triangulate_smooth(const std::vector<int>& loop, LoopMethod& method) {
+// A component without feature: the fan around its least-squares surface point when it has
+// many points (divide and conquer cuts ears off them, small triangles far from the pieces'
+// centres that checkMesh finds skewed; rank 1: the mass point moved onto the mean tangent
+// plane, O(h^2) off the interface), otherwise divide and conquer (Algorithm 1); then the
+// other of the two, §4.1's construction and the fan around the centroid.
+void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candidate>& out) {
   if (loop.size() == 3) {
-    method = LoopMethod::divide_and_conquer;
-    return {{loop[0], loop[1], loop[2]}};
+    out.push_back({LoopMethod::divide_and_conquer, {{loop[0], loop[1], loop[2]}}});
+    return;
   }
   const LoopPoints points{position_, faces_};
-  // Larger components: divide and conquer cuts ears off them, small triangles far from the
-  // pieces' centres (checkMesh skewness); the fan around the component's least-squares
-  // surface point (rank 1: the mass point moved onto the mean tangent plane, O(h^2) off the
-  // interface) reaches the middle from every triangle.
-  if (static_cast<int>(loop.size()) >= options_.fan_points) {
-    const auto [s, n] = fitted_points(loop);
-    Vec3 mass = Vec3::Zero();
-    for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
-    if (!s.empty())
-      if (const auto p = clamp(tangent_intersection(s, n, mass, 1), options_.reach)) {
-        method = LoopMethod::surface_fan;
-        return triangulate_fan(loop, add_point(*p));
-      }
-  }
-  if (auto t = triangulate_divide_and_conquer(points, loop)) {
-    method = LoopMethod::divide_and_conquer;
-    return std::move(*t);
-  }
-  if (auto t = triangulate_across_faces(points, loop)) {
-    method = LoopMethod::across_faces;
-    return std::move(*t);
-  }
-  method = LoopMethod::centroid_fan;
-  Vec3 centroid = Vec3::Zero();
-  for (int p : loop) centroid += position_[p] / static_cast<double>(loop.size());
-  return triangulate_fan(loop, add_point(centroid));
+  Vec3 mass = Vec3::Zero();
+  for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
+  std::optional<Candidate> surface;
+  const auto [s, n] = fitted_points(loop);
+  if (!s.empty())
+    if (const auto p = clamp(tangent_intersection(s, n, mass, 1), options_.reach))
+      surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, add_point(*p))};
+  const bool large = static_cast<int>(loop.size()) >= options_.fan_points;
+  if (surface && large) out.push_back(*surface);
+  if (auto t = triangulate_divide_and_conquer(points, loop)) out.push_back({LoopMethod::divide_and_conquer, std::move(*t)});
+  if (surface && !large) out.push_back(*surface);
+  if (auto t = triangulate_across_faces(points, loop)) out.push_back({LoopMethod::across_faces, std::move(*t)});
+  if (const auto p = clamp(mass, options_.reach))
+    out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(*p))});
+  if (out.empty()) out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(mass))});
 }
 
 void Splitter::build_pieces() {
@@ -389,9 +393,12 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
 // OpenFOAM's skewness of triangle t between the pieces with these centres (checkMesh,
 // primitiveMeshTools::faceSkewness and boundaryFaceSkewness), `outside` when the lower
 // side is region 0 and the face a boundary face.
-double Splitter::skewness(const Triangle& t, const Vec3& owner, const Vec3& neighbour, bool outside) const {
-  const Vec3 &a = position_[t[0]], &b = position_[t[1]], &c = position_[t[2]];
-  const Vec3 centre = (a + b + c) / 3.0, area = 0.5 * (b - a).cross(c - a);
+double Splitter::skewness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
+                          bool outside) const {
+  const std::vector<Index> loop(face.begin(), face.end());
+  const FaceGeometry g = polygon_geometry(position_, loop);
+  const Vec3& centre = g.centre;
+  const Vec3& area = g.area_vector;
   Vec3 offset;
   double scale;
   if (outside) {
@@ -408,8 +415,74 @@ double Splitter::skewness(const Triangle& t, const Vec3& owner, const Vec3& neig
   }
   const double len = offset.norm();
   if (len == 0.0) return 0.0;
-  for (const Vec3* p : {&a, &b, &c}) scale = std::max(scale, std::abs(offset.dot(*p - centre)) / len);
+  for (int p : face) scale = std::max(scale, std::abs(offset.dot(position_[p] - centre)) / len);
   return scale > 0.0 ? len / scale : std::numeric_limits<double>::infinity();
+}
+
+// The last resort for a face still too skewed: merged with a neighbouring face of its
+// component (sharing one edge, nearly coplanar) into a polygon, as long as that lowers its
+// skewness. The interface does not move; the trace is no longer a triangulation there.
+void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
+  const std::vector<Vec3> centre = piece_centres(triangles);
+  const double cos_limit = std::cos(options_.merge_angle * std::acos(-1.0) / 180.0);
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    const auto [lower, higher] = loop_pieces(loops_[l]);
+    const bool outside = out_.pieces[lower].region == 0;
+    const auto skew = [&](const std::vector<int>& f) { return skewness(f, centre[higher], centre[lower], outside); };
+    std::vector<std::vector<int>> faces;
+    for (const Triangle& t : triangles[l]) faces.push_back({t[0], t[1], t[2]});
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      while (!faces[f].empty() && skew(faces[f]) > options_.skewness_limit) {
+        double best = skew(faces[f]);
+        std::size_t best_g = faces.size();
+        std::vector<int> best_union;
+        const Vec3 nf = polygon_geometry(position_, std::vector<Index>(faces[f].begin(), faces[f].end())).area_vector.normalized();
+        for (std::size_t g = 0; g < faces.size(); ++g) {
+          if (g == f || faces[g].empty()) continue;
+          const std::vector<int> merged = merge_along_edge(faces[f], faces[g]);
+          if (merged.empty()) continue;
+          const Vec3 ng = polygon_geometry(position_, std::vector<Index>(faces[g].begin(), faces[g].end())).area_vector.normalized();
+          if (nf.dot(ng) < cos_limit) continue;
+          if (const double w = skew(merged); w < best) {
+            best = w;
+            best_g = g;
+            best_union = merged;
+          }
+        }
+        if (best_g == faces.size()) break;
+        faces[f] = std::move(best_union);
+        faces[best_g].clear();
+      }
+    }
+    triangles[l].clear();
+    for (std::vector<int>& f : faces) {
+      if (f.size() == 3) triangles[l].push_back({f[0], f[1], f[2]});
+      else if (!f.empty()) out_.polygons.push_back({std::move(f), lower, higher, static_cast<int>(l)});
+    }
+  }
+}
+
+// The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
+// they share none or more, or the union would touch itself.
+std::vector<int> Splitter::merge_along_edge(const std::vector<int>& a, const std::vector<int>& b) {
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  int shared = 0, ia = -1, ib = -1;
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j)
+      if (a[i] == b[(j + 1) % nb] && a[(i + 1) % na] == b[j]) {
+        ++shared;
+        ia = i;
+        ib = j;
+      }
+  if (shared != 1) return {};
+  // a from v around to u, then b from u (exclusive) around to v (exclusive).
+  std::vector<int> out;
+  for (int k = 1; k <= na; ++k) out.push_back(a[(ia + k) % na]);
+  for (int k = 2; k < nb; ++k) out.push_back(b[(ib + k) % nb]);
+  std::vector<int> sorted = out;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return {};
+  return out;
 }
 
 // Flips the diagonal of two coplanar triangles of a component (the surface does not move)
@@ -455,17 +528,55 @@ void Splitter::flip_slivers(std::vector<std::vector<Triangle>>& triangles) {
   }
 }
 
+// The worst skewness of the triangles, from the pieces' centres.
+double Splitter::worst_skewness(const std::vector<std::vector<Triangle>>& triangles) const {
+  const std::vector<Vec3> centre = piece_centres(triangles);
+  double worst = 0.0;
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    const auto [lower, higher] = loop_pieces(loops_[l]);
+    for (const Triangle& t : triangles[l])
+      worst = std::max(worst, skewness(t, centre[higher], centre[lower], out_.pieces[lower].region == 0));
+  }
+  return worst;
+}
+
 CellSplit Splitter::run() {
   build_loops();
-  std::vector<std::vector<Triangle>> triangles;
-  for (const Loop& loop : loops_) {
-    LoopMethod method;
-    triangles.push_back(triangulate(loop, method));
-    out_.loops.push_back(method);
-  }
+  std::vector<std::vector<Candidate>> options;
+  for (const Loop& loop : loops_) options.push_back(candidates(loop));
   build_pieces();
-  flip_slivers(triangles);
+  std::vector<std::size_t> choice(loops_.size(), 0);
+  const auto chosen = [&] {
+    std::vector<std::vector<Triangle>> t;
+    for (std::size_t l = 0; l < loops_.size(); ++l) t.push_back(options[l][choice[l]].triangles);
+    flip_slivers(t);
+    return t;
+  };
+  std::vector<std::vector<Triangle>> triangles = chosen();
+  double worst = worst_skewness(triangles);
+  // A face checkMesh would find too skewed: try the other triangulations, component by
+  // component, keeping any that lowers the worst skewness.
+  for (std::size_t l = 0; l < loops_.size() && worst > options_.skewness_limit; ++l)
+    for (std::size_t c = 0; c < options[l].size(); ++c) {
+      if (c == choice[l]) continue;
+      const std::size_t kept = choice[l];
+      choice[l] = c;
+      std::vector<std::vector<Triangle>> t = chosen();
+      if (const double w = worst_skewness(t); w < worst) {
+        worst = w;
+        triangles = std::move(t);
+      } else {
+        choice[l] = kept;
+      }
+    }
+  for (std::size_t l = 0; l < loops_.size(); ++l) out_.loops.push_back(options[l][choice[l]].method);
+  if (worst > options_.skewness_limit && options_.merge_angle > 0.0) merge_skewed(triangles);
   emit_triangles(triangles);
+  const std::vector<Vec3> centre = piece_centres(triangles);
+  out_.max_skewness = worst_skewness(triangles);
+  for (const PiecePolygon& p : out_.polygons)
+    out_.max_skewness = std::max(out_.max_skewness, skewness(p.points, centre[p.higher], centre[p.lower],
+                                                             out_.pieces[p.lower].region == 0));
   return std::move(out_);
 }
 

@@ -3,7 +3,6 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <chrono>
-#include <iostream>
 #include <string>
 
 #include "assemble.hpp"
@@ -30,7 +29,7 @@ void split_leaves(Octree& tree, const std::vector<Index>& leaves) {
 }
 
 void check_options(const CutcellOptions& o) {
-  if (o.crossing_levels < 0 || o.face_point_levels < 0)
+  if (o.crossing_levels < 0 || o.face_point_levels < 0 || o.quality_levels < 0)
     throw InputError("cutcell: the extra refinement levels must not be negative");
   if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= 0.25))
     throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");
@@ -44,6 +43,7 @@ namespace cutcell {
 // octree's refinement hook), recompute; then the grid of the final tree.
 Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& options,
                   CutcellStats& st) {
+  st.moved_vertices = st.unresolved_vertices = st.relabelled_vertices = 0;
   const auto progress = [&options](const char* stage, double fraction) {
     if (options.progress) options.progress(stage, fraction);
   };
@@ -52,6 +52,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
   settings.face.exact_points = settings.cell.exact_points = settings.exact;
   settings.face.feature_theta = settings.cell.feature.theta = options.feature_theta;
   settings.cell.feature.phi = options.feature_phi;
+  settings.cell.skewness_limit = options.skewness_limit;
   const int level = options.octree.level;
   const int crossing_level = std::min(kOctreeMaxLevel, level + options.crossing_levels);
   const int face_level = std::min(kOctreeMaxLevel, level + options.face_point_levels);
@@ -62,7 +63,6 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     grid = make_grid(tree, domain, settings);
     find_edge_points(grid);
     if (const std::vector<Index> split = leaves_crossed_twice(grid, crossing_level); !split.empty()) {
-      std::cerr << "DEBUG rule1 " << split.size() << " leaves " << tree.num_leaves() << "\n";
       split_leaves(tree, split);
       ++st.refinement_passes;
       continue;
@@ -84,7 +84,6 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     progress("face contours", 0.4);
     contour_faces(grid);
     if (const std::vector<Index> split = leaves_for_face_points(grid, face_level); !split.empty()) {
-      std::cerr << "DEBUG rule23 " << split.size() << " leaves " << tree.num_leaves() << "\n";
       split_leaves(tree, split);
       ++st.refinement_passes;
       continue;
@@ -110,24 +109,41 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   st.octree_seconds = seconds_since(start);
 
   const Clock::time_point cutting = Clock::now();
-  const Grid grid = refined_grid(tree, domain, options, st);
-
-  progress("cut cells", 0.6);
-  std::vector<Index> cut_of(tree.num_leaves(), kNoIndex);
-  std::vector<Index> cut_leaves;
-  for (Index i = 0; i < tree.num_leaves(); ++i)
-    if (grid.cut[i]) {
-      cut_of[i] = static_cast<Index>(cut_leaves.size());
-      cut_leaves.push_back(i);
-    }
-  std::vector<LeafCut> cuts(cut_leaves.size());
-  tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
-                    [&](std::size_t k) { cuts[k] = cut_leaf(grid, cut_leaves[k]); });
+  // Leaves whose cut makes a face that checkMesh would call highly skewed (a feature or a
+  // junction running next to a face or a corner) are split, a few levels at most.
+  const int quality_level = std::min(kOctreeMaxLevel, st.level + options.quality_levels);
+  Grid grid;
+  std::vector<Index> cut_of, cut_leaves;
+  std::vector<LeafCut> cuts;
+  for (;;) {
+    grid = refined_grid(tree, domain, options, st);
+    progress("cut cells", 0.6);
+    cut_of.assign(tree.num_leaves(), kNoIndex);
+    cut_leaves.clear();
+    for (Index i = 0; i < tree.num_leaves(); ++i)
+      if (grid.cut[i]) {
+        cut_of[i] = static_cast<Index>(cut_leaves.size());
+        cut_leaves.push_back(i);
+      }
+    cuts.assign(cut_leaves.size(), LeafCut{});
+    tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
+                      [&](std::size_t k) { cuts[k] = cut_leaf(grid, cut_leaves[k]); });
+    std::vector<Index> skewed;
+    for (std::size_t k = 0; k < cuts.size(); ++k)
+      if (cuts[k].split.max_skewness > options.skewness_limit && tree.leaf(cut_leaves[k]).level < quality_level)
+        skewed.push_back(cut_leaves[k]);
+    if (skewed.empty()) break;
+    split_leaves(tree, skewed);
+    ++st.refinement_passes;
+  }
   for (const FaceResult& r : grid.results) st.face_point_fallbacks += r.contour.point_left_face;
   for (const LeafCut& c : cuts) {
     st.cell_point_fallbacks += c.split.cell_point_left_cell;
+    st.max_skewness = std::max(st.max_skewness, c.split.max_skewness);
+    st.merged_faces += static_cast<Index>(c.split.polygons.size());
     for (LoopMethod m : c.split.loops) {
       st.feature_points += m == LoopMethod::feature_fan;
+      st.feature_splits += m == LoopMethod::feature_split;
       st.surface_fans += m == LoopMethod::surface_fan;
       st.cell_points += m == LoopMethod::interface_fan;
       st.centroid_fans += m == LoopMethod::centroid_fan;

@@ -1,36 +1,52 @@
-// 2:1 balance across faces and edges. Formulation: for every internal node at level k >= 1,
-// its 18 face and edge neighbours at level k must exist as nodes (leaf or internal); then no
+// 2:1 balance across faces and edges. Formulation: every internal node P at level k >= 1
+// must have its 18 face and edge neighbours of level k as nodes (leaf or internal); then no
 // leaf sharing part of a face or an edge with a leaf of level l is coarser than l - 1.
-// Internal nodes are processed from the deepest level up; a missing neighbour is created by
-// splitting the leaf that covers it, whose new internal nodes are queued at their (coarser)
-// level. Each node is visited once.
+// Those neighbours outside P's parent are children of the parent's three face and three edge
+// neighbours on P's side, so the condition reads: these six nodes of level k - 1 are
+// internal. A missing one is made so by splitting the leaf that covers it.
 #include <algorithm>
 #include <vector>
 
+#include "rebalance.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {
 
 namespace {
 
-constexpr Index kInternal = 0, kLeaf = 1;
-
 struct Node {
   GridPoint anchor;
   int level;
 };
 
-// The 18 offsets with one or two non-zero components: faces and edges.
-std::vector<std::array<int, 3>> face_and_edge_offsets() {
-  std::vector<std::array<int, 3>> offsets;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int nonzero = (dx != 0) + (dy != 0) + (dz != 0);
-        if (nonzero == 1 || nonzero == 2) offsets.push_back({dx, dy, dz});
-      }
-  return offsets;
+GridPoint align(const GridPoint& p, int level) {
+  const std::uint32_t mask = ~((kOctreeGrid >> level) - 1);
+  return {p[0] & mask, p[1] & mask, p[2] & mask};
 }
+
+// The parent's face and edge neighbours on the node's side (up to six, inside the root).
+int uncles(const Node& node, std::array<GridPoint, 6>& out) {
+  const int k = node.level - 1;
+  const std::int64_t size = kOctreeGrid >> k;
+  const GridPoint parent = align(node.anchor, k);
+  std::array<std::int64_t, 3> away;  // towards the node's side of the parent
+  for (int a = 0; a < 3; ++a) away[a] = node.anchor[a] == parent[a] ? -size : size;
+  int count = 0;
+  for (int mask = 1; mask < 7; ++mask) {  // the sets of one or two axes
+    std::array<std::int64_t, 3> q;
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+      q[a] = parent[a] + ((mask >> a & 1) ? away[a] : 0);
+      inside = inside && q[a] >= 0 && q[a] < kOctreeGrid;
+    }
+    if (inside)
+      out[count++] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]),
+                      static_cast<std::uint32_t>(q[2])};
+  }
+  return count;
+}
+
+constexpr Index kInternal = 0, kLeaf = 1;
 
 class Balancer {
  public:
@@ -51,25 +67,17 @@ class Balancer {
   }
 
   bool run() {
-    const auto offsets = face_and_edge_offsets();
     bool changed = false;
+    std::array<GridPoint, 6> q;
     for (int level = kOctreeMaxLevel; level >= 1; --level) {
       // Splits only queue nodes of coarser levels, so this list does not grow meanwhile.
       for (const Node& node : internal_[level]) {
-        const std::int64_t s = kOctreeGrid >> level;
-        for (const auto& d : offsets) {
-          GridPoint n;
-          bool inside = true;
-          for (int a = 0; a < 3; ++a) {
-            const std::int64_t c = node.anchor[a] + d[a] * s;
-            inside = inside && c >= 0 && c < kOctreeGrid;
-            n[a] = static_cast<std::uint32_t>(c);
-          }
-          if (inside && nodes_.find(octree_code(n, level)) == kNoIndex) {
-            create(n, level);
+        const int count = uncles(node, q);
+        for (int i = 0; i < count; ++i)
+          if (nodes_.find(octree_code(q[i], level - 1)) != kInternal) {
+            make_internal(q[i], level - 1);
             changed = true;
           }
-        }
       }
     }
     return changed;
@@ -85,17 +93,12 @@ class Balancer {
   }
 
  private:
-  static GridPoint align(const GridPoint& p, int level) {
-    const std::uint32_t mask = ~((kOctreeGrid >> level) - 1);
-    return {p[0] & mask, p[1] & mask, p[2] & mask};
-  }
-
-  // Splits the leaf covering (anchor, level) and its descendants on the way down until the
-  // node exists.
-  void create(const GridPoint& anchor, int level) {
-    int k = level - 1;
+  // Splits the leaf covering the node (anchor, level) and its descendants on the way down,
+  // the node itself included.
+  void make_internal(const GridPoint& anchor, int level) {
+    int k = level;
     while (nodes_.find(octree_code(align(anchor, k), k)) == kNoIndex) --k;
-    for (; k < level; ++k) {
+    for (; k <= level; ++k) {
       const GridPoint a = align(anchor, k);
       nodes_.insert(octree_code(a, k), kInternal);
       internal_[k].push_back({a, k});
@@ -109,12 +112,41 @@ class Balancer {
     }
   }
 
-  KeyMap nodes_;                           // code -> kLeaf or kInternal
+  KeyMap nodes_;                             // code -> kLeaf or kInternal
   std::vector<std::vector<Node>> internal_;  // internal nodes per level
-  std::vector<Node> leaves_;               // every leaf ever created (some split since)
+  std::vector<Node> leaves_;                 // every leaf ever created (some split since)
 };
 
 }  // namespace
+
+void split_balanced(Octree& tree, std::vector<Index> leaves) {
+  std::vector<Node> pending;  // internal nodes whose condition is still to be checked
+  std::array<GridPoint, 6> q;
+  for (;;) {
+    for (const Index i : leaves) pending.push_back({tree.leaf(i).anchor, tree.leaf(i).level});
+    tree.split(leaves);
+    leaves.clear();
+    std::vector<Node> unmet;
+    for (const Node& node : pending) {
+      if (node.level == 0) continue;
+      const int count = uncles(node, q);
+      bool met = true;
+      for (int i = 0; i < count; ++i) {
+        const Index leaf = tree.leaf_containing(q[i]);
+        if (tree.leaf(leaf).level < node.level) {  // q[i] is a leaf or inside one
+          leaves.push_back(leaf);
+          met = false;
+        }
+      }
+      // One split of a much coarser leaf may not be enough: check again after it.
+      if (!met) unmet.push_back(node);
+    }
+    if (leaves.empty()) return;
+    std::sort(leaves.begin(), leaves.end());
+    leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+    pending = std::move(unmet);
+  }
+}
 
 void balance(Octree& tree) {
   Balancer balancer(tree);

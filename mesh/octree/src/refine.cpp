@@ -4,10 +4,12 @@
 #include <oneapi/tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 
 #include "volmesh/core/errors.hpp"
+#include "rebalance.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {
@@ -31,7 +33,7 @@ class RegionCache {
   // `tree` is the tree being refined: it changes between fills, only its root matters.
   RegionCache(const Octree& tree, const Domain& domain) : tree_(tree), domain_(domain) {}
 
-  // Queries the points not seen yet, batched on both cores.
+  // Queries the points (Morton codes) not seen yet, batched on both cores.
   void fill(std::vector<std::uint64_t> codes) {
     tbb::parallel_sort(codes.begin(), codes.end());
     codes.erase(std::unique(codes.begin(), codes.end()), codes.end());
@@ -46,7 +48,7 @@ class RegionCache {
     known_.reserve(known_.size() + missing.size());
     for (std::size_t i = 0; i < missing.size(); ++i) known_.insert(missing[i], regions[i]);
   }
-  Index operator()(const GridPoint& p) const { return known_.find(morton_encode(p)); }
+  Index operator()(std::uint64_t code) const { return known_.find(code); }
 
  private:
   const Octree& tree_;
@@ -54,17 +56,21 @@ class RegionCache {
   KeyMap known_;
 };
 
-// An edge of a leaf as a sortable key: low end, axis, level.
-struct EdgeKey {
-  std::uint64_t low;
-  std::uint32_t axis_level;
-  bool operator<(const EdgeKey& o) const {
-    return low != o.low ? low < o.low : axis_level < o.axis_level;
-  }
-  bool operator==(const EdgeKey& o) const = default;
-};
+// The two ends of the edge whose midpoint is `mid`: along the one coordinate with the fewest
+// trailing zeros (an odd multiple of half the edge), the others being multiples of the edge.
+std::pair<GridPoint, GridPoint> edge_from_midpoint(const GridPoint& mid) {
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::countr_zero(mid[a]) < std::countr_zero(mid[axis])) axis = a;
+  const std::uint32_t half = std::uint32_t{1} << std::countr_zero(mid[axis]);
+  GridPoint lo = mid, hi = mid;
+  lo[axis] -= half;
+  hi[axis] += half;
+  return {lo, hi};
+}
 
-// Which of `candidates` have corners in different regions or an edge crossed by an interface.
+// Which of `candidates` (all below the finest level) have corners in different regions or an
+// edge crossed by an interface.
 std::vector<std::uint8_t> interface_leaves(const Octree& tree, RegionCache& regions,
                                            const Domain& domain,
                                            const std::vector<Index>& candidates) {
@@ -74,31 +80,32 @@ std::vector<std::uint8_t> interface_leaves(const Octree& tree, RegionCache& regi
     const OctreeLeaf& leaf = tree.leaf(candidates[i]);
     for (int k = 0; k < 8; ++k) corner_codes[8 * i + k] = morton_encode(leaf.corner(k));
   });
-  regions.fill(std::move(corner_codes));
+  regions.fill(corner_codes);
 
   std::vector<std::uint8_t> selected(n, 0);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    const OctreeLeaf& leaf = tree.leaf(candidates[i]);
-    const Index r0 = regions(leaf.corner(0));
-    for (int k = 1; k < 8 && !selected[i]; ++k) selected[i] = regions(leaf.corner(k)) != r0;
+    const Index r0 = regions(corner_codes[8 * i]);
+    for (int k = 1; k < 8 && !selected[i]; ++k) selected[i] = regions(corner_codes[8 * i + k]) != r0;
   });
 
   // Uniform corners: the leaf is still cut when an edge is crossed (twice, or touched).
+  // An edge is named by its midpoint, unique over all edges of all levels.
   std::vector<std::size_t> uniform;
   for (std::size_t i = 0; i < n; ++i)
     if (!selected[i]) uniform.push_back(i);
-  std::vector<std::pair<EdgeKey, std::uint32_t>> edges(12 * uniform.size());
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges(12 * uniform.size());
   tbb::parallel_for(std::size_t{0}, uniform.size(), [&](std::size_t j) {
     const OctreeLeaf& leaf = tree.leaf(candidates[uniform[j]]);
-    for (int e = 0; e < 12; ++e)
-      edges[12 * j + e] = {{morton_encode(leaf.corner(kEdgeCorners[e][0])),
-                            static_cast<std::uint32_t>(e / 4 * 32 + leaf.level)},
-                           static_cast<std::uint32_t>(j)};
+    for (int e = 0; e < 12; ++e) {
+      GridPoint mid = leaf.corner(kEdgeCorners[e][0]);
+      mid[e / 4] += leaf.size() / 2;
+      edges[12 * j + e] = {morton_encode(mid), static_cast<std::uint32_t>(j)};
+    }
   });
   tbb::parallel_sort(edges.begin(), edges.end());
   std::vector<std::size_t> first;  // start of each distinct edge in `edges`
   for (std::size_t k = 0; k < edges.size(); ++k)
-    if (k == 0 || !(edges[k].first == edges[k - 1].first)) first.push_back(k);
+    if (k == 0 || edges[k].first != edges[k - 1].first) first.push_back(k);
 
   std::vector<Vec3> a, b;
   std::vector<std::vector<Crossing>> hits;
@@ -107,11 +114,7 @@ std::vector<std::uint8_t> interface_leaves(const Octree& tree, RegionCache& regi
     a.resize(end - start);
     b.resize(end - start);
     tbb::parallel_for(start, end, [&](std::size_t k) {
-      const EdgeKey& key = edges[first[k]].first;
-      const GridPoint lo = morton_decode(key.low);
-      const int axis = static_cast<int>(key.axis_level / 32);
-      GridPoint hi = lo;
-      hi[axis] += kOctreeGrid >> (key.axis_level % 32);
+      const auto [lo, hi] = edge_from_midpoint(morton_decode(edges[first[k]].first));
       a[k - start] = tree.world(lo);
       b[k - start] = tree.world(hi);
     });
@@ -142,10 +145,9 @@ int refine(Octree& tree, const LeafPredicate& select, int max_level) {
     tbb::parallel_for(Index{0}, tree.num_leaves(), [&](Index i) {
       flags[i] = tree.leaf(i).level < max_level && select(tree, i);
     });
-    const std::vector<Index> chosen = flagged(flags);
+    std::vector<Index> chosen = flagged(flags);
     if (chosen.empty()) return passes;
-    tree.split(chosen);
-    balance(tree);
+    split_balanced(tree, std::move(chosen));
     ++passes;
   }
 }
@@ -169,35 +171,19 @@ void refine_toward(Octree& tree, const Domain& domain, int level) {
       else
         uncut[candidates[i]] = 1;
     }
-    std::vector<std::uint8_t> next;
-    if (!chosen.empty()) {
-      // Split leaves are replaced in place by their eight children.
-      next.reserve(uncut.size() + 7 * chosen.size());
-      std::size_t k = 0;
-      for (Index i = 0; i < tree.num_leaves(); ++i) {
-        if (k < chosen.size() && chosen[k] == i) {
-          next.insert(next.end(), 8, 0);
-          ++k;
-        } else {
-          next.push_back(uncut[i]);
-        }
-      }
-      tree.split(chosen);
-    } else {
-      // Balancing may create new leaves below `level` near the interface: check those too.
-      const std::vector<OctreeLeaf> before(tree.leaves().begin(), tree.leaves().end());
-      balance(tree);
-      if (tree.num_leaves() == static_cast<Index>(before.size())) return;
-      // Balancing only splits, so a surviving leaf keeps its Morton position among the new.
-      next.assign(tree.num_leaves(), 0);
-      std::size_t i = 0;
-      for (Index j = 0; j < tree.num_leaves(); ++j) {
-        const OctreeLeaf& l = tree.leaf(j);
-        const std::uint64_t code = morton_encode(l.anchor);
-        while (i < before.size() && morton_encode(before[i].anchor) < code) ++i;
-        if (i < before.size() && before[i].anchor == l.anchor && before[i].level == l.level)
-          next[j] = uncut[i];
-      }
+    if (chosen.empty()) return;
+    // Splitting and balancing only refine, so a surviving leaf keeps its Morton position
+    // among the new ones: carry its flag over.
+    const std::vector<OctreeLeaf> before(tree.leaves().begin(), tree.leaves().end());
+    split_balanced(tree, std::move(chosen));
+    std::vector<std::uint8_t> next(tree.num_leaves(), 0);
+    std::size_t i = 0;
+    for (Index j = 0; j < tree.num_leaves(); ++j) {
+      const OctreeLeaf& l = tree.leaf(j);
+      const std::uint64_t code = morton_encode(l.anchor);
+      while (i < before.size() && morton_encode(before[i].anchor) < code) ++i;
+      if (i < before.size() && before[i].anchor == l.anchor && before[i].level == l.level)
+        next[j] = uncut[i];
     }
     uncut = std::move(next);
   }

@@ -73,7 +73,9 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     for (int k = 0; k < 8; ++k) corners[8 * i + k] = {morton_encode(tree.leaf(i).corner(k)), 8 * i + k};
   });
-  tbb::parallel_sort(corners.begin(), corners.end());
+  // Equal codes may come in any order: each gets the same vertex id.
+  tbb::parallel_sort(corners.begin(), corners.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
   OctreeVertices v;
   v.leaf_corners.resize(n);
   std::vector<std::uint64_t> codes;

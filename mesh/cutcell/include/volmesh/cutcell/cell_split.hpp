@@ -66,6 +66,13 @@ struct CellOptions {
   // Two triangles of a component whose points lie within flat * size of each other's plane
   // may swap their diagonal (the surface stays put) when that lowers their skewness.
   double flat = 1e-6;
+  // When a triangle is more skewed than this (OpenFOAM's measure; checkMesh flags faces
+  // above 4), the other triangulations of each component are tried.
+  double skewness_limit = 4.0;
+  // The last resort for a triangle still more skewed: merged with neighbouring triangles of
+  // its interface whose normals differ by less than this angle (degrees) into one polygon
+  // face. 0 keeps the trace a triangulation everywhere.
+  double merge_angle = 30.0;
 };
 
 enum class LoopMethod : std::uint8_t {
@@ -91,14 +98,24 @@ struct PieceTriangle {
   int lower = -1, higher = -1;  // pieces
   int loop = -1;                // the component it triangulates (CellSplit::loops)
 };
+// Triangles of a component merged into one polygon because each alone was too skewed.
+struct PiecePolygon {
+  std::vector<int> points;
+  int lower = -1, higher = -1;
+  int loop = -1;
+};
 
 struct CellSplit {
   std::vector<Vec3> new_points;  // index points.size() + k: cell interface and feature points
   std::vector<CellPiece> pieces;
   std::vector<PieceTriangle> triangles;
+  std::vector<PiecePolygon> polygons;  // rare: see CellOptions::merge_angle
   std::vector<int> polygon_piece;  // the piece of each input polygon
   std::vector<LoopMethod> loops;   // how each component was triangulated
   bool cell_point_left_cell = false;  // the least-squares cell point fell outside; centroid used
+  // Largest OpenFOAM skewness of the triangles (checkMesh flags faces above 4), from the
+  // pieces' centres; a boundary triangle (region 0 below) as checkMesh measures those.
+  double max_skewness = 0.0;
 };
 
 // Throws std::logic_error when the contour does not close (inconsistent input).

@@ -27,6 +27,10 @@ struct CutcellOptions {
   // The paper's k: a face interface point that leaves its face splits the leaves around
   // it, down to octree.level + this; past it the centroid of the edge points is used.
   int face_point_levels = 1;
+  // Leaves whose cut makes a face more skewed than skewness_limit (OpenFOAM's measure;
+  // checkMesh flags faces above 4) are split, down to octree.level + quality_levels.
+  int quality_levels = 2;
+  double skewness_limit = 4.0;
   // Tiny cut cells: a grid vertex whose nearest crossing along an edge lies closer than
   // this fraction of the edge is moved off the interface (exact mode only).
   double vertex_clearance = 0.1;
@@ -48,10 +52,13 @@ struct CutcellStats {
                                  // level, given their edge's region (a thinner layer is lost)
   Index face_point_fallbacks = 0, cell_point_fallbacks = 0;
   Index feature_points = 0;      // fans around EMC feature points
+  Index feature_splits = 0;      // components split along a sharp edge
   Index surface_fans = 0;        // fans around the surface point of a large component
   Index cell_points = 0;         // cell interface points
   Index centroid_fans = 0, across_face_triangulations = 0;
   double min_cell_volume_ratio = 0.0;  // smallest cell volume / h^3, h its leaf's edge
+  double max_skewness = 0.0;           // of the cut faces inside leaves (OpenFOAM's measure)
+  Index merged_faces = 0;  // polygons made of interface triangles too skewed on their own
   double octree_seconds = 0.0, cut_seconds = 0.0, total_seconds = 0.0;
 };
 

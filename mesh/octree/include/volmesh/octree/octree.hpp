@@ -161,13 +161,16 @@ void balance(Octree& tree);
 // max_level, rebalances, and evaluates `select` again on the whole new tree, until no leaf
 // below max_level is selected. `select` runs concurrently on both cores and must be
 // thread-safe; it may look at neighbours. Returns the number of passes that split something.
+// The tree must be balanced on entry (build_octree, balance and refine leave it so): the
+// balance is restored around the splits only.
 using LeafPredicate = std::function<bool(const Octree&, Index leaf)>;
 int refine(Octree& tree, const LeafPredicate& select, int max_level);
 
 // Splits leaves below `level` while their eight corners do not all lie in the same region of
 // `domain` or one of their twelve edges is crossed by an interface (Domain::crossings, which
-// also catches an edge crossed twice between equal end regions), then rebalances; repeats on
-// the leaves balancing creates. Region and crossing queries are batched on both cores.
+// also catches an edge crossed twice between equal end regions), keeping the tree balanced
+// (it must be balanced on entry); leaves that balancing creates are checked too. Region and
+// crossing queries are batched on both cores.
 void refine_toward(Octree& tree, const Domain& domain, int level);
 
 // Extra refinement fronts with their own depth.
