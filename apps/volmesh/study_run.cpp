@@ -2,10 +2,11 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <fstream>
-#include <regex>
+#include <string_view>
 
 #include "volmesh/core/errors.hpp"
 #include "volmesh/domain/open_domain.hpp"
@@ -63,14 +64,19 @@ nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 }  // namespace
 
 std::pair<int, int> parse_levels(const std::string& text) {
-  static const std::regex range(R"((\d{1,2})(?:\.\.(\d{1,2}))?)");
-  std::smatch m;
-  if (!std::regex_match(text, m, range))
-    throw InputError("--levels " + text + ": expected A..B, e.g. 2..5");
-  const int first = std::stoi(m[1].str());
-  const int last = m[2].matched ? std::stoi(m[2].str()) : first;
-  if (first > last)
-    throw InputError("--levels " + text + ": the first level exceeds the last");
+  const auto number = [&](std::string_view digits, int& value) {
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() && end == digits.data() + digits.size() && !digits.empty() &&
+           digits.front() != '-' && digits.front() != '+';
+  };
+  const std::string_view t(text);
+  const std::size_t dots = t.find("..");
+  int first = 0, last = 0;
+  const bool ok = dots == std::string_view::npos
+                      ? number(t, first) && number(t, last)
+                      : number(t.substr(0, dots), first) && number(t.substr(dots + 2), last);
+  if (!ok) throw InputError("--levels " + text + ": expected A..B, e.g. 2..5");
+  if (first > last) throw InputError("--levels " + text + ": the first level exceeds the last");
   return {first, last};
 }
 

@@ -1,7 +1,7 @@
 // The polyhedral space (fem.hpp): P1 on the sub-tessellation of polyhedral.hpp, face nodes
-// tied to the mean of their face's vertices, one condensed node per cell at its vertex
-// average. Global nodes are the mesh vertices; a cell's local nodes are its distinct
-// vertices in increasing point order, then the cell node.
+// tied to the mean of their face's vertices, one condensed node per cell at its star centre.
+// Global nodes are the mesh vertices; a cell's local nodes are its distinct vertices in
+// increasing point order, then the cell node.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -19,19 +19,6 @@
 namespace volmesh::fem::detail {
 namespace {
 
-// Sub-tetrahedron volume relative to the cube of its longest edge at or below which the
-// cell counts as degenerate there (a regular tet has 0.118).
-constexpr double kDegenerateShape = 1e-12;
-
-double shape_measure(const SubTetrahedron& t) {
-  double longest = 0.0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      longest = std::max(longest, (t.corners[i] - t.corners[j]).norm());
-  const double volume = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
-  return longest > 0.0 ? volume / (longest * longest * longest) : 0.0;
-}
-
 void sorted_cell_vertices(const PolyMesh& mesh, std::span<const Index> faces,
                           std::vector<Index>& out) {
   out.clear();
@@ -43,16 +30,10 @@ void sorted_cell_vertices(const PolyMesh& mesh, std::span<const Index> faces,
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
-Vec3 vertex_average(const PolyMesh& mesh, std::span<const Index> vertices) {
-  Vec3 sum = Vec3::Zero();
-  for (Index v : vertices) sum += mesh.points[v];
-  return vertices.empty() ? sum : Vec3(sum / static_cast<double>(vertices.size()));
-}
-
 class PolyhedralSpace final : public FeSpace {
  public:
   explicit PolyhedralSpace(const PolyMesh& mesh)
-      : mesh_(mesh), cell_faces_(build_cell_faces(mesh)) {
+      : mesh_(mesh), cell_faces_(build_cell_faces(mesh)), splits_(split_faces(mesh)) {
     const Index nc = mesh.num_cells();
     // Each cell's sorted distinct vertices, counted then filled (in parallel).
     vertex_offsets_.assign(nc + 1, 0);
@@ -73,12 +54,17 @@ class PolyhedralSpace final : public FeSpace {
     }
     vertices_.resize(vertex_offsets_[nc]);
     apex_.resize(nc);
+    std::vector<char> seen(nc, 0);
     for_cells([&](Index c, std::vector<Index>& scratch) {
       sorted_cell_vertices(mesh, cell_faces_.of(c), scratch);
       std::copy(scratch.begin(), scratch.end(), vertices_.begin() + vertex_offsets_[c]);
-      apex_[c] = vertex_average(mesh, scratch);
+      if (const auto apex = star_centre(mesh, splits_, cell_faces_.of(c), c)) {
+        apex_[c] = *apex;
+        seen[c] = 1;
+      }
     });
-    check_sub_tetrahedra();
+    const auto bad = std::find(seen.begin(), seen.end(), 0);
+    if (bad != seen.end()) throw_not_star_shaped(static_cast<Index>(bad - seen.begin()));
 
     std::vector<char> used(mesh.num_points(), 0);
     for (Index v : vertices_) used[v] = 1;
@@ -102,45 +88,46 @@ class PolyhedralSpace final : public FeSpace {
     // Vertices of the current face; its group holds them in loop order, then the cell node.
     int n = 0;
     std::vector<int> group;
-    for_each_sub_tetrahedron(mesh_, cell_faces_.of(c), c, apex_[c], [&](const SubTetrahedron& t) {
-      if (t.face != current_face) {
-        current_face = t.face;
-        const auto loop = mesh_.face(t.face);
-        n = static_cast<int>(loop.size());
-        group.clear();
-        for (Index v : loop)
-          group.push_back(static_cast<int>(std::lower_bound(vertices.begin(), vertices.end(), v) -
-                                           vertices.begin()));
-        group.push_back(cell_node);
-        out.begin_group(group);
-      }
-      const TetAffine a = tet_affine(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
-      const double spread = 1.0 / n;
-      for (const auto& q : rule_points) {
-        const auto& l = q.barycentric;
-        const Vec3 at =
-            l[0] * t.corners[0] + l[1] * t.corners[1] + l[2] * t.corners[2] + l[3] * t.corners[3];
-        const int i = out.add_point(a.volume * q.weight, at);
-        auto value = out.values(i);
-        auto gradient = out.gradients(i);
-        value[n] += l[0];
-        gradient[n] += a.gradient[0];
-        value[t.p] += l[1];
-        gradient[t.p] += a.gradient[1];
-        value[t.q] += l[2];
-        gradient[t.q] += a.gradient[2];
-        if (t.fanned) {
-          // The face node's shape function is shared equally by the face's vertices.
-          for (int k = 0; k < n; ++k) {
-            value[k] += spread * l[3];
-            gradient[k] += spread * a.gradient[3];
+    for_each_sub_tetrahedron(
+        mesh_, splits_, cell_faces_.of(c), c, apex_[c], [&](const SubTetrahedron& t) {
+          if (t.face != current_face) {
+            current_face = t.face;
+            const auto loop = mesh_.face(t.face);
+            n = static_cast<int>(loop.size());
+            group.clear();
+            for (Index v : loop)
+              group.push_back(static_cast<int>(
+                  std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin()));
+            group.push_back(cell_node);
+            out.begin_group(group);
           }
-        } else {
-          value[t.r] += l[3];
-          gradient[t.r] += a.gradient[3];
-        }
-      }
-    });
+          const TetAffine a = tet_affine(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+          const double spread = 1.0 / n;
+          for (const auto& q : rule_points) {
+            const auto& l = q.barycentric;
+            const Vec3 at = l[0] * t.corners[0] + l[1] * t.corners[1] + l[2] * t.corners[2] +
+                            l[3] * t.corners[3];
+            const int i = out.add_point(a.volume * q.weight, at);
+            auto value = out.values(i);
+            auto gradient = out.gradients(i);
+            value[n] += l[0];
+            gradient[n] += a.gradient[0];
+            value[t.p] += l[1];
+            gradient[t.p] += a.gradient[1];
+            value[t.q] += l[2];
+            gradient[t.q] += a.gradient[2];
+            if (t.fanned) {
+              // The face node's shape function is shared equally by the face's vertices.
+              for (int k = 0; k < n; ++k) {
+                value[k] += spread * l[3];
+                gradient[k] += spread * a.gradient[3];
+              }
+            } else {
+              value[t.r] += l[3];
+              gradient[t.r] += a.gradient[3];
+            }
+          }
+        });
   }
 
   void face_nodes(Index f, std::vector<Index>& out) const override {
@@ -164,6 +151,20 @@ class PolyhedralSpace final : public FeSpace {
       }
       return;
     }
+    if (!splits_.fanned(mesh_, f)) {
+      for (Index i = splits_.offsets[f]; i < splits_.offsets[f + 1]; ++i) {
+        const auto& tri = splits_.triangles[i];
+        const Vec3 &a = mesh_.points[loop[tri[0]]], &b = mesh_.points[loop[tri[1]]],
+                   &c = mesh_.points[loop[tri[2]]];
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        for (const auto& q : rule) {
+          const auto& l = q.barycentric;
+          double* values = out.add_point(area * q.weight, l[0] * a + l[1] * b + l[2] * c);
+          for (int j = 0; j < 3; ++j) values[tri[j]] = l[j];
+        }
+      }
+      return;
+    }
     const Vec3 m = face_vertex_average(mesh_, f);
     for (int k = 0; k < n; ++k) {
       const Vec3 &a = mesh_.points[loop[k]], &b = mesh_.points[loop[(k + 1) % n]];
@@ -184,38 +185,35 @@ class PolyhedralSpace final : public FeSpace {
             static_cast<std::size_t>(vertex_offsets_[c + 1] - vertex_offsets_[c])};
   }
 
-  void check_sub_tetrahedra() const {
-    const auto worst = [&](Index c) {
-      std::pair<double, SubTetrahedron> w{2.0, {}};
-      for_each_sub_tetrahedron(mesh_, cell_faces_.of(c), c, apex_[c], [&](const SubTetrahedron& t) {
-        const double s = shape_measure(t);
-        if (s < w.first) w = {s, t};
-      });
-      return w;
-    };
-    const Index bad = first_cell_where(mesh_.num_cells(), [&](Index c) {
-      return cell_faces_.of(c).size() < 4 || !(worst(c).first > kDegenerateShape);
-    });
-    if (bad == kNoIndex) return;
+  // The message for a cell without a star centre, with the worst sub-tetrahedron seen from
+  // its vertex average.
+  [[noreturn]] void throw_not_star_shaped(Index c) const {
+    std::vector<Index> vertices;
+    sorted_cell_vertices(mesh_, cell_faces_.of(c), vertices);
+    Vec3 average = Vec3::Zero();
+    for (Index v : vertices) average += mesh_.points[v] / static_cast<double>(vertices.size());
+    double worst = 0.0;
+    Index face = kNoIndex;
+    for_each_sub_tetrahedron(
+        mesh_, splits_, cell_faces_.of(c), c, average, [&](const SubTetrahedron& t) {
+          const double v = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+          if (face == kNoIndex || v < worst) worst = v, face = t.face;
+        });
     std::ostringstream message;
-    message << "mesh: cell " << bad << ": ";
-    if (cell_faces_.of(bad).size() < 4) {
-      message << "only " << cell_faces_.of(bad).size() << " faces";
-    } else {
-      const auto [s, t] = worst(bad);
-      const double volume = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
-      message << (volume < 0.0 ? "inverted" : "degenerate")
-              << " or not star-shaped about its vertex average (the sub-tetrahedron on face "
-              << t.face << " has volume " << volume << ")";
-    }
+    message << "mesh: cell " << c
+            << ": inverted, degenerate or not star-shaped: no point inside sees all its faces";
+    if (face != kNoIndex)
+      message << " (from its vertex average, face " << face << " gives a sub-tetrahedron of volume "
+              << worst << ")";
     throw InputError(message.str());
   }
 
   const PolyMesh& mesh_;
   CellFaces cell_faces_;
+  FaceSplits splits_;
   std::vector<Index> vertex_offsets_;
   std::vector<Index> vertices_;  // per cell, sorted distinct vertices
-  std::vector<Vec3> apex_;       // per cell, the vertex average: the cell node
+  std::vector<Vec3> apex_;       // per cell, its star centre: the cell node
 };
 
 }  // namespace
@@ -225,13 +223,3 @@ std::unique_ptr<FeSpace> make_polyhedral_space(const PolyMesh& mesh) {
 }
 
 }  // namespace volmesh::fem::detail
-
-namespace volmesh::fem {
-
-Vec3 cell_vertex_average(const PolyMesh& mesh, std::span<const Index> faces) {
-  std::vector<Index> vertices;
-  detail::sorted_cell_vertices(mesh, faces, vertices);
-  return detail::vertex_average(mesh, vertices);
-}
-
-}  // namespace volmesh::fem

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "volmesh/core/cell_soup.hpp"
@@ -162,6 +163,39 @@ inline PolyMesh plane_cut_grid(Index n, const Vec3& normal, double offset) {
   }
   PolyMesh mesh = cells_to_poly(std::move(soup));
   tag_cube_sides(mesh);
+  return mesh;
+}
+
+// `layers` unit-high prisms stacked along z on an L-shaped profile with a long arm: cells
+// whose vertex average lies outside them, joined by non-convex L faces whose fan about the
+// vertex average folds. Tags: "zmin", "zmax", and "side0" … "side5" for the prism walls.
+inline PolyMesh l_prism_stack(int layers) {
+  const std::vector<Eigen::Vector2d> profile{{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 6}, {0, 6}};
+  const Index n = static_cast<Index>(profile.size());
+  PolyMesh mesh;
+  for (int z = 0; z <= layers; ++z)
+    for (const auto& p : profile) mesh.points.push_back(Vec3(p.x(), p.y(), z));
+  const auto level = [n](int z, Index k) { return z * n + k; };
+  const Index zmin = mesh.tag_index("zmin"), zmax = mesh.tag_index("zmax");
+  std::vector<Index> sides;
+  for (Index k = 0; k < n; ++k) sides.push_back(mesh.tag_index("side" + std::to_string(k)));
+  for (int z = 0; z <= layers; ++z) {
+    std::vector<Index> loop;  // counter-clockwise seen from above: outward for the cell below
+    for (Index k = 0; k < n; ++k) loop.push_back(level(z, k));
+    if (z == 0) {
+      std::reverse(loop.begin(), loop.end());
+      mesh.add_face(loop, 0, kNoIndex, zmin);
+    } else {
+      mesh.add_face(loop, z - 1, z < layers ? z : kNoIndex, z < layers ? kNoIndex : zmax);
+    }
+  }
+  for (int z = 0; z < layers; ++z)
+    for (Index k = 0; k < n; ++k) {
+      const Index b = (k + 1) % n;
+      const std::array<Index, 4> side{level(z, k), level(z, b), level(z + 1, b), level(z + 1, k)};
+      mesh.add_face(side, z, kNoIndex, sides[k]);
+    }
+  mesh.cell_region.assign(layers, 1);
   return mesh;
 }
 

@@ -145,7 +145,8 @@ TEST(FemInputs, PolyhedronNotStarShaped) {
   mesh.points[corner] = Vec3(0.8, 0.0, 0.0);
   const std::string message =
       input_error([&] { solve_elasticity(mesh, clamped(mesh), Space::polyhedral); });
-  EXPECT_EQ(message.rfind("mesh: cell 1: inverted or not star-shaped", 0), 0u) << message;
+  EXPECT_EQ(message.rfind("mesh: cell 1: inverted, degenerate or not star-shaped", 0), 0u)
+      << message;
 }
 
 TEST(FemInputs, SpaceThatDoesNotFitTheCells) {

@@ -124,7 +124,8 @@ TEST(Lagrange, Q1IsNodalAndSumsToOne) {
 }
 
 // The sub-tetrahedra of every cell are positive and add up to the cell volume that core's
-// geometry computes, for octree cells with hanging faces and warped cut cells.
+// geometry computes, for octree cells with hanging faces and warped cut cells; those cells
+// are star-shaped about their vertex average.
 TEST(Polyhedral, SubTetrahedraFillEachCell) {
   std::vector<PolyMesh> meshes{test::big_cube_next_to_four_small(), test::octree_checkerboard(2),
                                test::plane_cut_grid(3, Vec3(1.0, 0.6, 0.35), 0.93)};
@@ -132,11 +133,24 @@ TEST(Polyhedral, SubTetrahedraFillEachCell) {
   for (const PolyMesh& mesh : meshes) {
     const CellFaces cf = build_cell_faces(mesh);
     const MeshGeometry geometry = mesh_geometry(mesh, cf);
+    const FaceSplits splits = split_faces(mesh);
+    EXPECT_TRUE(splits.triangles.empty());  // every fan is proper
     for (Index c = 0; c < mesh.num_cells(); ++c) {
-      const Vec3 apex = cell_vertex_average(mesh, cf.of(c));
+      const auto apex = star_centre(mesh, splits, cf.of(c), c);
+      ASSERT_TRUE(apex);
+      Vec3 average = Vec3::Zero();
+      int vertices = 0;
+      for (Index p = 0; p < mesh.num_points(); ++p)
+        for (Index f : cf.of(c))
+          if (std::find(mesh.face(f).begin(), mesh.face(f).end(), p) != mesh.face(f).end()) {
+            average += mesh.points[p];
+            ++vertices;
+            break;
+          }
+      EXPECT_LT((*apex - average / vertices).norm(), 1e-15);
       double volume = 0.0;
       int count = 0;
-      for_each_sub_tetrahedron(mesh, cf.of(c), c, apex, [&](const SubTetrahedron& t) {
+      for_each_sub_tetrahedron(mesh, splits, cf.of(c), c, *apex, [&](const SubTetrahedron& t) {
         const double v = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
         EXPECT_GT(v, 0.0) << "cell " << c << " face " << t.face;
         volume += v;
@@ -146,6 +160,32 @@ TEST(Polyhedral, SubTetrahedraFillEachCell) {
       EXPECT_GE(count, 4);
     }
   }
+}
+
+// An L-shaped prism with a long arm: its two L faces fold their fans about the vertex
+// average, and the cell is not star-shaped about its vertex average either. The faces are
+// ear-clipped, the apex moves into the kernel, and the sub-tetrahedra fill the cell.
+TEST(Polyhedral, NonConvexFacesAndCellsFindATriangulationAndACentre) {
+  const PolyMesh mesh = test::l_prism_stack(1);
+  const Index n = 6;
+  const FaceSplits splits = split_faces(mesh);
+  EXPECT_FALSE(splits.fanned(mesh, 0));
+  EXPECT_FALSE(splits.fanned(mesh, 1));
+  EXPECT_EQ(splits.offsets[2] - splits.offsets[0], 2 * (n - 2));
+  for (Index f = 2; f < mesh.num_faces(); ++f) EXPECT_TRUE(splits.fanned(mesh, f));
+  const CellFaces cf = build_cell_faces(mesh);
+  const auto apex = star_centre(mesh, splits, cf.of(0), 0);
+  ASSERT_TRUE(apex);
+  // Not the vertex average (14/6, 14/6, 1/2), outside the L; the kernel is [0,1]² × [0,1].
+  EXPECT_LT(apex->x(), 1.0);
+  EXPECT_LT(apex->y(), 1.0);
+  double volume = 0.0;
+  for_each_sub_tetrahedron(mesh, splits, cf.of(0), 0, *apex, [&](const SubTetrahedron& t) {
+    const double v = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+    EXPECT_GT(v, 0.0) << "face " << t.face;
+    volume += v;
+  });
+  EXPECT_NEAR(volume, 11.0, 1e-12);  // (6 + 5) × 1 × height 1
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ JSON object per file:
     partitions   for a .pvtu: cells per piece; for an MSH 2.2 file that gmsh wrote from a
                  partitioned mesh: volume elements per partition (its elements' partition tags)
     cell_ids     for a .pvtu: whether GlobalCellIds of all pieces are 0 .. N-1, each once
+    regions      for a .pvtu: the region of each cell, by GlobalCellIds
     point_ids    for a .pvtu: distinct GlobalPointIds, and whether every piece puts a point id
                  at the same coordinates
 
@@ -32,14 +33,12 @@ def tet_volumes(points, tets):
     return np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a)) / 6.0
 
 
-def polyhedron_volume(points, faces):
+def polyhedra_volume(points, cells):
     """Divergence theorem over the outward faces, each fanned from its first vertex."""
-    volume = 0.0
-    for face in faces:
-        p = points[face]
-        for k in range(1, len(face) - 1):
-            volume += np.dot(p[0], np.cross(p[k], p[k + 1])) / 6.0
-    return volume
+    t = np.array([(face[0], face[k], face[k + 1]) for cell in cells for face in cell
+                  for k in range(1, len(face) - 1)])
+    products = np.einsum("ij,ij->i", points[t[:, 0]], np.cross(points[t[:, 1]], points[t[:, 2]]))
+    return products.sum() / 6.0
 
 
 def volume(mesh):
@@ -50,7 +49,7 @@ def volume(mesh):
         elif block.type == "hexahedron":
             total += sum(tet_volumes(mesh.points, block.data[:, list(t)]).sum() for t in HEX_TETS)
         elif block.type.startswith("polyhedron"):
-            total += sum(polyhedron_volume(mesh.points, cell) for cell in block.data)
+            total += polyhedra_volume(mesh.points, block.data)
     return total
 
 
@@ -90,7 +89,7 @@ def main():
         root = ET.parse(path).getroot()
         sources = [p.get("Source") for p in root.iter("Piece")]
         cells, total, per_piece = Counter(), 0.0, []
-        cell_ids, point_at, consistent = [], {}, True
+        cell_ids, regions, point_at, consistent = [], {}, {}, True
         cell_data, point_data = set(), set()
         for source in sources:
             mesh, piece_cells = read_one(os.path.join(os.path.dirname(path), source))
@@ -99,8 +98,9 @@ def main():
             total += volume(mesh)
             cell_data.update(mesh.cell_data)
             point_data.update(mesh.point_data)
-            for ids in mesh.cell_data["GlobalCellIds"]:
+            for ids, region in zip(mesh.cell_data["GlobalCellIds"], mesh.cell_data["region"]):
                 cell_ids.extend(int(i) for i in ids)
+                regions.update((int(i), int(r)) for i, r in zip(ids, region))
             for point, gid in zip(mesh.points, mesh.point_data["GlobalPointIds"]):
                 known = point_at.setdefault(int(gid), tuple(point))
                 consistent = consistent and known == tuple(point)
@@ -109,6 +109,7 @@ def main():
             "cell_data": sorted(cell_data), "point_data": sorted(point_data),
             "partitions": per_piece,
             "cell_ids": sorted(cell_ids) == list(range(len(cell_ids))),
+            "regions": [regions.get(i, 0) for i in range(len(cell_ids))],
             "point_ids": {"distinct": len(point_at), "consistent": consistent},
         }))
 

@@ -3,7 +3,7 @@
 // parts), imbalance, contiguity. One JSON object per line on stdout.
 //   bench_partition --grid N [--parts 2,4,8] [--method kway|recursive|all]
 //   bench_partition --tets N [...]      N^3 cubes split into 6 Kuhn tets each
-//   bench_partition mesh.vtu [...]
+//   bench_partition mesh.vtu [...] [--contiguous]
 //   bench_partition --grid N --write mesh.msh --parts ''   writes the mesh (for gmsh) only
 #include <chrono>
 #include <ctime>
@@ -34,7 +34,7 @@ std::vector<Index> parse_list(const std::string& text) {
 int run(int argc, char** argv) {
   std::string mesh_file, methods = "all", write_file;
   Index grid = 0;
-  bool tets = false;
+  bool tets = false, contiguous = false;
   std::vector<Index> parts{2, 4, 8, 16, 32, 64};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -45,6 +45,8 @@ int run(int argc, char** argv) {
       parts = parse_list(argv[++i]);
     } else if (arg == "--method" && i + 1 < argc) {
       methods = argv[++i];
+    } else if (arg == "--contiguous") {
+      contiguous = true;
     } else if (arg == "--write" && i + 1 < argc) {
       write_file = argv[++i];
     } else {
@@ -53,7 +55,7 @@ int run(int argc, char** argv) {
   }
   if (grid < 1 && mesh_file.empty()) {
     std::cerr << "usage: bench_partition (--grid N | --tets N | MESH) [--parts 2,4,..] "
-                 "[--method M] [--write FILE]\n";
+                 "[--method M] [--contiguous] [--write FILE]\n";
     return 2;
   }
   const std::string name =
@@ -78,6 +80,7 @@ int run(int argc, char** argv) {
       PartitionOptions options;
       options.parts = k;
       options.method = method;
+      options.contiguous = contiguous;
       const std::clock_t cpu_start = std::clock();
       const PartitionStats s = partition_graph(graph, options, name).stats;
       const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -92,6 +95,7 @@ int run(int argc, char** argv) {
                              {"edge_cut", s.edge_cut},
                              {"imbalance", s.imbalance},
                              {"contiguous", s.all_contiguous()},
+                             {"contiguity_enforced", s.contiguity_enforced},
                              {"filled_empty_parts", s.filled_empty_parts}};
       std::cout << j.dump() << std::endl;
     }

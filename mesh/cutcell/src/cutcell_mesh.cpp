@@ -115,7 +115,7 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   Grid grid;
   std::vector<Index> cut_of, cut_leaves;
   std::vector<LeafCut> cuts;
-  for (;;) {
+  for (int pass = 0;; ++pass) {
     grid = refined_grid(tree, domain, options, st);
     progress("cut cells", 0.6);
     cut_of.assign(tree.num_leaves(), kNoIndex);
@@ -132,7 +132,9 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
     for (std::size_t k = 0; k < cuts.size(); ++k)
       if (cuts[k].split.max_skewness > options.skewness_limit && tree.leaf(cut_leaves[k]).level < quality_level)
         skewed.push_back(cut_leaves[k]);
-    if (skewed.empty()) break;
+    // Each pass splits the skewed leaves once; their children may need it again, at most
+    // quality_levels times along any path (splitting can also create new skewed leaves).
+    if (skewed.empty() || pass >= 2 * options.quality_levels) break;
     split_leaves(tree, skewed);
     ++st.refinement_passes;
   }

@@ -4,6 +4,7 @@
 // crossings of the domain, so the geometry keeps its second order; only the grid warps.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "cut_grid.hpp"
 
@@ -79,8 +80,8 @@ class Mover {
               out.end());
     return out;
   }
-  bool acceptable(Index v, const Vec3& p, Index region, const Around& around,
-                  const std::vector<double>& far_before) const;
+  double clearance_at(const Vec3& p, Index region, const Around& around,
+                      const std::vector<double>& far_before) const;
   bool move(Index v);
 
   Grid& grid_;
@@ -88,26 +89,29 @@ class Mover {
   std::vector<State> state_;
 };
 
-// A new position p (region `region`) is acceptable when every edge at v is crossed as its end
-// regions require, at least the clearance away from p, and no closer to the far end than
-// before unless that end is still to be moved; and split leaf edges keep one change of region.
-bool Mover::acceptable(Index v, const Vec3& p, Index region, const Around& around,
-                       const std::vector<double>& far_before) const {
+// The clearance a position p (region `region`) leaves: the smallest fraction of an edge at v
+// between p, or a far end that is not still to be moved, and a crossing; negative when an edge
+// would be crossed other than its end regions require (none, or once between them) or a split
+// leaf edge would change region twice.
+double Mover::clearance_at(const Vec3& p, Index region, const Around& around,
+                           const std::vector<double>& far_before) const {
   for (const auto& [m, far] : around.split_edges)
-    if (region != grid_.region[m] && grid_.region[m] != grid_.region[far]) return false;
+    if (region != grid_.region[m] && grid_.region[m] != grid_.region[far]) return -1.0;
+  double clear = 1.0;
   const std::vector<Index>& ends = around.ends;
   for (std::size_t k = 0; k < ends.size(); ++k) {
     const Index w = ends[k];
     const std::vector<Crossing> hits = transversal(p, grid_.position[w]);
     if (region == grid_.region[w]) {
-      if (!hits.empty()) return false;
+      if (!hits.empty()) return -1.0;
       continue;
     }
-    if (hits.size() != 1 || hits[0].t < clearance_) return false;
+    if (hits.size() != 1) return -1.0;
+    clear = std::min(clear, hits[0].t);
     const double far = 1.0 - hits[0].t;
-    if (far < clearance_ && far < far_before[k] && state_[w] != pending) return false;
+    if (far < clearance_ && far < far_before[k] && state_[w] != pending) clear = std::min(clear, far);
   }
-  return true;
+  return clear;
 }
 
 bool Mover::move(Index v) {
@@ -128,26 +132,44 @@ bool Mover::move(Index v) {
   }
   if (!nearest.found || nearest.fraction >= clearance_) return true;
 
-  // The normal points from v's side into the other region.
+  // Off the interface along its normal (which points from v's side into the other region):
+  // across it when that leaves the vertex outside, so that the kept pieces grow, otherwise
+  // away from it. A midpoint vertex keeps its region (its leaf edge would change region
+  // twice). Next to a junction no such move may clear every interface: then farther and
+  // nearer moves and moves along the axes, keeping the one that clears the most.
   const Vec3 n = nearest.crossing.normal;
-  const double distance = 1.5 * clearance_ * shortest;
-  const Vec3 across = nearest.crossing.point + distance * n;
-  const Vec3 away = nearest.crossing.point - distance * n;
+  const Vec3& at = nearest.crossing.point;
+  const double step = 1.5 * clearance_ * shortest;
   const Index own = grid_.region[v], other = nearest.crossing.after;
-  // Across the interface when that leaves the vertex outside: the kept pieces then grow. A
-  // midpoint vertex keeps its region (its leaf edge would change region twice).
   const bool hanging = grid_.vertices.hanging[v] != 0;
-  const std::array<Vec3, 2> order = other == 0 && own != 0 && !hanging ? std::array{across, away} : std::array{away, across};
-  for (const Vec3& p : order) {
+  const double first = other == 0 && own != 0 && !hanging ? 1.0 : -1.0;
+  std::vector<Vec3> candidates{at + first * step * n, at - first * step * n};
+  for (const double scale : {0.5, 2.0})
+    for (const double side : {-1.0, 1.0}) candidates.push_back(at + side * scale * step * n);
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-1.0, 1.0}) candidates.push_back(x + side * step * Vec3::Unit(axis));
+  double best = nearest.fraction;
+  bool resolved = false;
+  std::optional<std::pair<Vec3, Index>> chosen;
+  for (const Vec3& p : candidates) {
     const Index region = grid_.domain->region(p);
     if (hanging && region != own) continue;
-    if (acceptable(v, p, region, around, far_before)) {
-      grid_.position[v] = p;
-      grid_.region[v] = region;
-      return true;
+    const double clear = clearance_at(p, region, around, far_before);
+    if (clear >= clearance_) {
+      chosen = {p, region};
+      resolved = true;
+      break;
+    }
+    if (clear > best) {
+      best = clear;
+      chosen = {p, region};
     }
   }
-  return false;
+  if (chosen) {
+    grid_.position[v] = chosen->first;
+    grid_.region[v] = chosen->second;
+  }
+  return resolved;
 }
 
 std::array<Index, 2> Mover::run() {

@@ -67,23 +67,60 @@ void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVer
 
 OctreeVertices octree_vertex_geometry(const Octree& tree) {
   const std::size_t n = tree.leaves().size();
-  // Every leaf corner with its (leaf, corner) slot, sorted by Morton code: equal codes are
-  // one vertex.
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> corners(8 * n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    for (int k = 0; k < 8; ++k) corners[8 * i + k] = {morton_encode(tree.leaf(i).corner(k)), 8 * i + k};
+  // Leaves come mostly in complete sibling groups (the eight children of one parent, one
+  // after the other in Morton order) whose 64 corners are 27 points: listing each point once
+  // per group roughly halves the sort. A unit is such a group or a single leaf.
+  std::vector<std::size_t> unit_leaf, unit_entry{0};
+  for (std::size_t i = 0; i < n;) {
+    const OctreeLeaf& l = tree.leaf(i);
+    bool group = l.level > 0 && i + 8 <= n &&
+                 ((l.anchor[0] | l.anchor[1] | l.anchor[2]) & (2 * l.size() - 1)) == 0;
+    for (std::size_t c = 1; group && c < 8; ++c) group = tree.leaf(i + c).level == l.level;
+    unit_leaf.push_back(i);
+    unit_entry.push_back(unit_entry.back() + (group ? 27 : 8));
+    i += group ? 8 : 1;
+  }
+  auto is_group = [&](std::size_t u) { return unit_entry[u + 1] - unit_entry[u] == 27; };
+  // (code, entry) pairs sorted by code: equal codes are one vertex.
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> entries(unit_entry.back());
+  tbb::parallel_for(std::size_t{0}, unit_leaf.size(), [&](std::size_t u) {
+    const OctreeLeaf& l = tree.leaf(unit_leaf[u]);
+    const std::size_t e0 = unit_entry[u];
+    if (!is_group(u)) {
+      for (int k = 0; k < 8; ++k) entries[e0 + k] = {morton_encode(l.corner(k)), e0 + k};
+      return;
+    }
+    const std::uint32_t s = l.size();
+    for (std::uint32_t p = 0; p < 27; ++p)
+      entries[e0 + p] = {morton_encode({l.anchor[0] + p % 3 * s, l.anchor[1] + p / 3 % 3 * s,
+                                        l.anchor[2] + p / 9 * s}),
+                         e0 + p};
   });
   // Equal codes may come in any order: each gets the same vertex id.
-  tbb::parallel_sort(corners.begin(), corners.end(),
+  tbb::parallel_sort(entries.begin(), entries.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::uint64_t> codes;
+  std::vector<Index> vertex_of(entries.size());
+  for (const auto& [code, entry] : entries) {
+    if (codes.empty() || codes.back() != code) codes.push_back(code);
+    vertex_of[entry] = static_cast<Index>(codes.size() - 1);
+  }
+  entries = {};
   OctreeVertices v;
   v.leaf_corners.resize(n);
-  std::vector<std::uint64_t> codes;
-  for (const auto& [code, slot] : corners) {
-    if (codes.empty() || codes.back() != code) codes.push_back(code);
-    v.leaf_corners[slot / 8][slot % 8] = static_cast<Index>(codes.size() - 1);
-  }
-  corners = {};
+  tbb::parallel_for(std::size_t{0}, unit_leaf.size(), [&](std::size_t u) {
+    const std::size_t e0 = unit_entry[u];
+    if (!is_group(u)) {
+      for (int k = 0; k < 8; ++k) v.leaf_corners[unit_leaf[u]][k] = vertex_of[e0 + k];
+      return;
+    }
+    for (int c = 0; c < 8; ++c)
+      for (int k = 0; k < 8; ++k) {
+        const int p = (c & 1) + (k & 1) + 3 * ((c >> 1 & 1) + (k >> 1 & 1)) +
+                      9 * ((c >> 2 & 1) + (k >> 2 & 1));
+        v.leaf_corners[unit_leaf[u] + c][k] = vertex_of[e0 + p];
+      }
+  });
   if (codes.size() > static_cast<std::size_t>(kMaxIndex))
     throw InputError("octree: " + std::to_string(codes.size()) +
                      " vertices exceed the index limit " + std::to_string(kMaxIndex) +

@@ -6,17 +6,20 @@
 //   p2          quadratic tetrahedra (nodes at corners and edge midpoints); needs tets
 //   q1          trilinear hexahedra, 2×2×2 Gauss points; needs hexes
 //   polyhedral  lowest-order conforming space on any cell (octree cells with hanging faces,
-//               cut cells with warped faces): P1 on the sub-tessellation of polyhedral.hpp.
-//               A face node at each face's vertex average carries the mean of the face's
-//               vertex values (one constraint seen alike from both cells: conforming; exact
-//               for linear functions, whose mean over the vertices is their value at the
-//               vertex average), and a cell node at the cell's vertex average is a free
-//               unknown eliminated per cell by static condensation. Condensing rather than
-//               fixing the cell node to the vertex mean: the space is larger (it contains the
-//               constrained one), so the Galerkin solution is at least as accurate in energy,
-//               at no cost in global unknowns. Sub-tessellation rather than lowest-order VEM:
-//               a genuine piecewise-linear space, so errors, stresses and VTU output are
-//               evaluated exactly, with no projection or stabilisation parameter.
+//               cut cells with warped or non-convex faces): P1 on the sub-tessellation of
+//               polyhedral.hpp. A face node at each face's vertex average carries the mean of
+//               the face's vertex values (one constraint seen alike from both cells:
+//               conforming; exact for linear functions, whose mean over the vertices is their
+//               value at the vertex average); a non-convex face whose fan would fold is
+//               triangulated instead. A cell node at the cell's star centre (its vertex
+//               average unless that does not see every face) is a free unknown eliminated per
+//               cell by static condensation. Condensing rather than fixing the cell node to
+//               the vertex mean: the space is larger (it contains the constrained one), so the
+//               Galerkin solution is at least as accurate in energy, at no cost in global
+//               unknowns, and the node may sit anywhere that sees the faces. Sub-tessellation
+//               rather than lowest-order VEM: a genuine piecewise-linear space, so errors,
+//               stresses and VTU output are evaluated exactly, with no projection or
+//               stabilisation parameter.
 // The global unknowns are the mesh vertices (plus edge midpoints for p2).
 //
 // Boundary data are taken at the mesh boundary point mapped by problem.to_true_boundary:
@@ -30,9 +33,8 @@
 //
 // Input checks throw volmesh::InputError: a region without conductivity/material, a
 // boundary tag without a condition, no Dirichlet (displacement) tag at all, an inverted or
-// degenerate cell (non-positive Jacobian; for the polyhedral space a non-positive
-// sub-tetrahedron: the cell is not star-shaped about its vertex average), a cell the space
-// cannot take (p1 on a hex).
+// degenerate cell (non-positive Jacobian; for the polyhedral space: no point inside sees all
+// its faces), a cell the space cannot take (p1 on a hex).
 //
 // Local matrices are computed in parallel (TBB) and added in cell order: the same bytes for
 // any thread count. The problem's functions (source, boundary data, exact solution) are

@@ -72,7 +72,7 @@ struct CellOptions {
   // The last resort for a triangle still more skewed: merged with neighbouring triangles of
   // its interface whose normals differ by less than this angle (degrees) into one polygon
   // face. 0 keeps the trace a triangulation everywhere.
-  double merge_angle = 30.0;
+  double merge_angle = 60.0;
 };
 
 enum class LoopMethod : std::uint8_t {
