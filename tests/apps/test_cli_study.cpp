@@ -137,8 +137,9 @@ TEST(CliStudy, BadInputsGiveOneLineAndNoOutput) {
     EXPECT_FALSE(fs::exists(out)) << args;
   }
   // Usage: no method, no levels, an unknown method.
-  for (const std::string& args : {"--problem sine --levels 1..2", "--problem sine --method grid",
-                                  "--problem sine --method fem --levels 1..2"}) {
+  for (const std::string& args :
+       std::vector<std::string>{"--problem sine --levels 1..2", "--problem sine --method grid",
+                                "--problem sine --method fem --levels 1..2"}) {
     const auto r = run_volmesh("study convergence " + args + " -o " + out.string(), dir);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(out)) << args;

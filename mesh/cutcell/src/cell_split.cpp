@@ -80,6 +80,11 @@ class Splitter {
   int cell_point(const std::vector<int>& face_points);
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_skewness(const std::vector<std::vector<Triangle>>& triangles) const;
+  // Puts back the first candidates moved into `triangles`.
+  static void options_copy_back(std::vector<std::vector<Candidate>>& options,
+                                const std::vector<std::vector<Triangle>>& triangles) {
+    for (std::size_t l = 0; l < options.size(); ++l) options[l][0].triangles = triangles[l];
+  }
   // The edge points of a loop with known normals.
   std::pair<std::vector<Vec3>, std::vector<Vec3>> fitted_points(const std::vector<int>& loop) const;
   void split_along_feature(const std::vector<int>& loop, std::vector<Candidate>& out);
@@ -292,7 +297,6 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candi
     out.push_back({LoopMethod::divide_and_conquer, {{loop[0], loop[1], loop[2]}}});
     return;
   }
-  const LoopPoints points{position_, faces_};
   Vec3 mass = Vec3::Zero();
   for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
   std::optional<Candidate> surface;
@@ -301,6 +305,8 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candi
     if (const auto p = clamp(tangent_intersection(s, n, mass, 1), options_.reach))
       surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, add_point(*p))};
   const bool large = static_cast<int>(loop.size()) >= options_.fan_points;
+  // After add_point: the spans must see the vectors as they are now.
+  const LoopPoints points{position_, faces_};
   if (surface && large) out.push_back(*surface);
   if (auto t = triangulate_divide_and_conquer(points, loop)) out.push_back({LoopMethod::divide_and_conquer, std::move(*t)});
   if (surface && !large) out.push_back(*surface);
@@ -395,10 +401,16 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
 // side is region 0 and the face a boundary face.
 double Splitter::skewness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
                           bool outside) const {
-  const std::vector<Index> loop(face.begin(), face.end());
-  const FaceGeometry g = polygon_geometry(position_, loop);
-  const Vec3& centre = g.centre;
-  const Vec3& area = g.area_vector;
+  Vec3 centre, area;
+  if (face.size() == 3) {
+    const Vec3 &a = position_[face[0]], &b = position_[face[1]], &c = position_[face[2]];
+    centre = (a + b + c) / 3.0;
+    area = 0.5 * (b - a).cross(c - a);
+  } else {
+    const FaceGeometry g = polygon_geometry(position_, std::vector<Index>(face.begin(), face.end()));
+    centre = g.centre;
+    area = g.area_vector;
+  }
   Vec3 offset;
   double scale;
   if (outside) {
@@ -546,37 +558,46 @@ CellSplit Splitter::run() {
   for (const Loop& loop : loops_) options.push_back(candidates(loop));
   build_pieces();
   std::vector<std::size_t> choice(loops_.size(), 0);
-  const auto chosen = [&] {
-    std::vector<std::vector<Triangle>> t;
-    for (std::size_t l = 0; l < loops_.size(); ++l) t.push_back(options[l][choice[l]].triangles);
-    flip_slivers(t);
-    return t;
-  };
-  std::vector<std::vector<Triangle>> triangles = chosen();
+  std::vector<std::vector<Triangle>> triangles;
+  for (std::size_t l = 0; l < loops_.size(); ++l) triangles.push_back(std::move(options[l][0].triangles));
   double worst = worst_skewness(triangles);
-  // A face checkMesh would find too skewed: try the other triangulations, component by
-  // component, keeping any that lowers the worst skewness.
-  for (std::size_t l = 0; l < loops_.size() && worst > options_.skewness_limit; ++l)
-    for (std::size_t c = 0; c < options[l].size(); ++c) {
-      if (c == choice[l]) continue;
-      const std::size_t kept = choice[l];
-      choice[l] = c;
-      std::vector<std::vector<Triangle>> t = chosen();
-      if (const double w = worst_skewness(t); w < worst) {
-        worst = w;
-        triangles = std::move(t);
-      } else {
-        choice[l] = kept;
+  if (worst > options_.skewness_limit) {
+    // A face checkMesh would find too skewed: flip slivers on flat facets, then try the
+    // other triangulations, component by component, keeping any that lowers the worst.
+    options_copy_back(options, triangles);
+    const auto chosen = [&] {
+      std::vector<std::vector<Triangle>> t;
+      for (std::size_t l = 0; l < loops_.size(); ++l) t.push_back(options[l][choice[l]].triangles);
+      flip_slivers(t);
+      return t;
+    };
+    triangles = chosen();
+    worst = worst_skewness(triangles);
+    for (std::size_t l = 0; l < loops_.size() && worst > options_.skewness_limit; ++l)
+      for (std::size_t c = 0; c < options[l].size(); ++c) {
+        if (c == choice[l]) continue;
+        const std::size_t kept = choice[l];
+        choice[l] = c;
+        std::vector<std::vector<Triangle>> t = chosen();
+        if (const double w = worst_skewness(t); w < worst) {
+          worst = w;
+          triangles = std::move(t);
+        } else {
+          choice[l] = kept;
+        }
       }
+    if (worst > options_.skewness_limit && options_.merge_angle > 0.0) {
+      merge_skewed(triangles);
+      const std::vector<Vec3> centre = piece_centres(triangles);
+      worst = worst_skewness(triangles);
+      for (const PiecePolygon& p : out_.polygons)
+        worst = std::max(worst, skewness(p.points, centre[p.higher], centre[p.lower],
+                                         out_.pieces[p.lower].region == 0));
     }
+  }
   for (std::size_t l = 0; l < loops_.size(); ++l) out_.loops.push_back(options[l][choice[l]].method);
-  if (worst > options_.skewness_limit && options_.merge_angle > 0.0) merge_skewed(triangles);
   emit_triangles(triangles);
-  const std::vector<Vec3> centre = piece_centres(triangles);
-  out_.max_skewness = worst_skewness(triangles);
-  for (const PiecePolygon& p : out_.polygons)
-    out_.max_skewness = std::max(out_.max_skewness, skewness(p.points, centre[p.higher], centre[p.lower],
-                                                             out_.pieces[p.lower].region == 0));
+  out_.max_skewness = worst;
   return std::move(out_);
 }
 

@@ -29,7 +29,7 @@ void split_leaves(Octree& tree, const std::vector<Index>& leaves) {
 }
 
 void check_options(const CutcellOptions& o) {
-  if (o.crossing_levels < 0 || o.face_point_levels < 0 || o.quality_levels < 0)
+  if (o.crossing_levels < 0 || o.face_point_levels < 0)
     throw InputError("cutcell: the extra refinement levels must not be negative");
   if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= 0.25))
     throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");
@@ -68,18 +68,14 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
       continue;
     }
     st.relabelled_vertices = relabel_midpoints(grid);
-    if (st.relabelled_vertices > 0) {
-      classify_leaves(grid);
-      find_edge_points(grid);
-    }
     if (settings.exact && options.vertex_clearance > 0.0) {
       const auto [moved, unresolved] = move_vertices(grid, options.vertex_clearance);
       st.moved_vertices = moved;
       st.unresolved_vertices = unresolved;
-      if (moved > 0) {
-        classify_leaves(grid);
-        find_edge_points(grid);
-      }
+    }
+    if (st.relabelled_vertices > 0 || st.moved_vertices > 0) {
+      classify_leaves(grid);
+      find_edge_points(grid);
     }
     progress("face contours", 0.4);
     contour_faces(grid);
@@ -109,35 +105,17 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   st.octree_seconds = seconds_since(start);
 
   const Clock::time_point cutting = Clock::now();
-  // Leaves whose cut makes a face that checkMesh would call highly skewed (a feature or a
-  // junction running next to a face or a corner) are split, a few levels at most.
-  const int quality_level = std::min(kOctreeMaxLevel, st.level + options.quality_levels);
-  Grid grid;
-  std::vector<Index> cut_of, cut_leaves;
-  std::vector<LeafCut> cuts;
-  for (int pass = 0;; ++pass) {
-    grid = refined_grid(tree, domain, options, st);
-    progress("cut cells", 0.6);
-    cut_of.assign(tree.num_leaves(), kNoIndex);
-    cut_leaves.clear();
-    for (Index i = 0; i < tree.num_leaves(); ++i)
-      if (grid.cut[i]) {
-        cut_of[i] = static_cast<Index>(cut_leaves.size());
-        cut_leaves.push_back(i);
-      }
-    cuts.assign(cut_leaves.size(), LeafCut{});
-    tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
-                      [&](std::size_t k) { cuts[k] = cut_leaf(grid, cut_leaves[k]); });
-    std::vector<Index> skewed;
-    for (std::size_t k = 0; k < cuts.size(); ++k)
-      if (cuts[k].split.max_skewness > options.skewness_limit && tree.leaf(cut_leaves[k]).level < quality_level)
-        skewed.push_back(cut_leaves[k]);
-    // Each pass splits the skewed leaves once; their children may need it again, at most
-    // quality_levels times along any path (splitting can also create new skewed leaves).
-    if (skewed.empty() || pass >= 2 * options.quality_levels) break;
-    split_leaves(tree, skewed);
-    ++st.refinement_passes;
-  }
+  const Grid grid = refined_grid(tree, domain, options, st);
+  progress("cut cells", 0.6);
+  std::vector<Index> cut_of(tree.num_leaves(), kNoIndex), cut_leaves;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (grid.cut[i]) {
+      cut_of[i] = static_cast<Index>(cut_leaves.size());
+      cut_leaves.push_back(i);
+    }
+  std::vector<LeafCut> cuts(cut_leaves.size());
+  tbb::parallel_for(std::size_t{0}, cut_leaves.size(),
+                    [&](std::size_t k) { cuts[k] = cut_leaf(grid, cut_leaves[k]); });
   for (const FaceResult& r : grid.results) st.face_point_fallbacks += r.contour.point_left_face;
   for (const LeafCut& c : cuts) {
     st.cell_point_fallbacks += c.split.cell_point_left_cell;

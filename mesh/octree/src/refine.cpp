@@ -1,5 +1,4 @@
 // Refinement: the generic predicate fixpoint, the interface criterion, fronts, build_octree.
-#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_sort.h>
 
@@ -8,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "volmesh/core/errors.hpp"
 #include "rebalance.hpp"
+#include "volmesh/core/errors.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {

@@ -27,9 +27,8 @@ struct CutcellOptions {
   // The paper's k: a face interface point that leaves its face splits the leaves around
   // it, down to octree.level + this; past it the centroid of the edge points is used.
   int face_point_levels = 1;
-  // Leaves whose cut makes a face more skewed than skewness_limit (OpenFOAM's measure;
-  // checkMesh flags faces above 4) are split, down to octree.level + quality_levels.
-  int quality_levels = 2;
+  // A cut face more skewed than this (OpenFOAM's measure; checkMesh flags faces above 4)
+  // makes the cell try its other triangulations, then merge the face with its neighbours.
   double skewness_limit = 4.0;
   // Tiny cut cells: a grid vertex whose nearest crossing along an edge lies closer than
   // this fraction of the edge is moved off the interface (exact mode only).

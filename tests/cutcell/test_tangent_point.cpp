@@ -1,0 +1,65 @@
+// Least-squares points of tangent planes (system (2) of the octree paper) and the
+// Kobbelt/EMC sharp-feature test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "volmesh/cutcell/tangent_point.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+TEST(TangentPoint, ThreePlanesMeetAtTheirCorner) {
+  const std::vector<Vec3> s{{1, 0.3, 0.7}, {0.2, 2, 0.1}, {0.5, 0.4, 3}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+  EXPECT_LT((tangent_intersection(s, n) - Vec3(1, 2, 3)).norm(), 1e-12);
+}
+
+TEST(TangentPoint, AnUnconstrainedDirectionKeepsTheMassPoint) {
+  // Two planes x = 1 and y = 2: the line (1, 2, z); z stays at the points' mean.
+  const std::vector<Vec3> s{{1, 0, 0.2}, {0, 2, 0.6}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitY()};
+  EXPECT_LT((tangent_intersection(s, n) - Vec3(1, 2, 0.4)).norm(), 1e-12);
+  // Relative to another origin, that origin's z.
+  EXPECT_LT((tangent_intersection(s, n, Vec3(0, 0, 0.9)) - Vec3(1, 2, 0.9)).norm(), 1e-12);
+}
+
+TEST(TangentPoint, NearlyParallelPlanesAreTruncated) {
+  // Rows with a singular value below the cutoff are dropped: the point stays within the
+  // spread of the planes instead of running off along their intersection.
+  const std::vector<Vec3> s{{0, 0, 0}, {0, 0, 0.01}};
+  const std::vector<Vec3> n{Vec3(0, 0.001, 1).normalized(), Vec3(0, -0.001, 1).normalized()};
+  EXPECT_LT(tangent_intersection(s, n).norm(), 0.02);
+}
+
+TEST(SharpFeature, SmoothNormalsHaveNone) {
+  std::vector<Vec3> s, n;
+  for (int k = 0; k < 6; ++k) {
+    const double a = 0.2 * k;
+    n.push_back(Vec3(std::sin(a) * 0.3, std::cos(a) * 0.3, 1).normalized());
+    s.push_back(n.back());
+  }
+  EXPECT_FALSE(sharp_feature(s, n).has_value());
+}
+
+TEST(SharpFeature, BoxEdgeIsAnEdgeOnTheEdgeLine) {
+  // Faces x = 1 and y = 1 of a box: the edge (1, 1, z), nearest the points' mean z.
+  const std::vector<Vec3> s{{1, 0.2, 0.1}, {1, 0.5, 0.5}, {0.3, 1, 0.3}, {0.6, 1, 0.7}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitY()};
+  const auto f = sharp_feature(s, n);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_FALSE(f->corner);
+  EXPECT_LT((f->point - Vec3(1, 1, 0.4)).norm(), 1e-12);
+}
+
+TEST(SharpFeature, BoxCornerIsACorner) {
+  const std::vector<Vec3> s{{1, 0.2, 0.1}, {0.3, 1, 0.3}, {0.6, 0.2, 1}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+  const auto f = sharp_feature(s, n);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_TRUE(f->corner);
+  EXPECT_LT((f->point - Vec3(1, 1, 1)).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace volmesh::cutcell
