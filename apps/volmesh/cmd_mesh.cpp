@@ -140,15 +140,6 @@ nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validi
   return regions;
 }
 
-// Checked before meshing, so a typo does not cost a whole run.
-void require_writable_format(std::string path) {
-  while (path.size() > 1 && path.back() == '/') path.pop_back();
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext != ".vtu" && ext != ".msh" && ext != ".mesh" && ext != ".inp" && ext != ".foam")
-    throw InputError(path + ": unknown output format (use .vtu .msh .mesh .inp or a DIR.foam case)");
-}
-
 int run_mesh(const MeshOptions& opt) {
   if (opt.tets && opt.method != "grid") {
     std::cerr << "volmesh mesh: --tets applies to the grid method only\n";
@@ -162,7 +153,7 @@ int run_mesh(const MeshOptions& opt) {
   if (opt.threads > 0)
     threads = std::make_unique<tbb::global_control>(
         tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
-  require_writable_format(opt.output);
+  require_writable_mesh_path(opt.output);
 
   const Clock::time_point start = Clock::now();
   const std::unique_ptr<Domain> domain = open_domain(opt.domain);

@@ -30,15 +30,22 @@ bool is_mesh_file(const std::filesystem::path& path) {
   return ext == ".vtu" || ext == ".msh" || ext == ".foam" || is_foam_case(path);
 }
 
+void require_writable_mesh_path(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  for (const char* known : {".vtu", ".msh", ".mesh", ".inp", ".foam"})
+    if (ext == known) return;
+  throw InputError(path.string() +
+                   ": unknown output format (use .vtu .msh .mesh .inp or a DIR.foam case)");
+}
+
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path, const MeshFields& fields) {
+  require_writable_mesh_path(path);
   const std::string ext = lower_extension(path);
   if (ext == ".vtu") return write_vtu(mesh, path, fields);
   if (ext == ".msh") return write_msh(mesh, path);
   if (ext == ".mesh") return write_medit(mesh, path);
   if (ext == ".inp") return write_abaqus(mesh, path);
-  if (ext == ".foam") return write_foam(mesh, path);
-  throw InputError(path.string() +
-                   ": unknown output format (use .vtu .msh .mesh .inp or a DIR.foam case)");
+  return write_foam(mesh, path);
 }
 
 PolyMesh read_mesh(const std::filesystem::path& path) {

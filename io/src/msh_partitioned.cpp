@@ -15,6 +15,7 @@
 
 #include "canonical_order.hpp"
 #include "element_export.hpp"
+#include "msh_elements.hpp"
 #include "msh_format.hpp"
 #include "text_format.hpp"
 #include "volmesh/core/errors.hpp"
@@ -26,12 +27,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Element {
-  Index tag = 0;
-  int size = 0;
-  std::array<Index, 8> vertices{};
-  std::span<const Index> corners() const { return {vertices.data(), static_cast<size_t>(size)}; }
-};
+using msh::Element;
+using msh::make_element;
 
 struct Box {
   Vec3 lo = Vec3::Constant(0.0), hi = Vec3::Constant(0.0);
@@ -71,13 +68,6 @@ void check_partition(const PolyMesh& mesh, std::span<const Index> cell_part, Ind
       throw InputError(path.string() + ": cell " + std::to_string(c) + ": region " +
                        std::to_string(mesh.cell_region[c]) + " (MSH needs regions >= 1)");
   }
-}
-
-template <typename Loop>
-Element make_element(Index tag, const Loop& loop, std::size_t size) {
-  Element e{tag, static_cast<int>(size), {}};
-  std::copy(loop.begin(), loop.begin() + size, e.vertices.begin());
-  return e;
 }
 
 // Collects partitioned entities by key, in key order, with tags from first_tag on.
@@ -176,15 +166,10 @@ void add_surfaces(const PolyMesh& mesh, std::span<const Index> cell_part, const 
 // Cells keep their order within an element type; faces are sorted by vertices and numbered
 // after the cells. Boxes from the elements; a model entity's box holds its parts' boxes.
 void finish(const PolyMesh& mesh, Entities& entities) {
-  for (Entity& entity : entities.part_volumes)
-    std::stable_sort(entity.elements.begin(), entity.elements.end(),
-                     [](const Element& a, const Element& b) { return a.size < b.size; });
+  for (Entity& entity : entities.part_volumes) msh::sort_by_size(entity.elements);
   Index next = mesh.num_cells() + 1;
   for (Entity& entity : entities.part_surfaces) {
-    std::sort(entity.elements.begin(), entity.elements.end(),
-              [](const Element& a, const Element& b) {
-                return std::tie(a.size, a.vertices) < std::tie(b.size, b.vertices);
-              });
+    msh::sort_by_vertices(entity.elements);
     for (Element& e : entity.elements) e.tag = next++;
   }
   for (auto [model, parts] : {std::pair{&entities.volumes, &entities.part_volumes},
@@ -305,48 +290,6 @@ void append_nodes(std::string& text, const PolyMesh& mesh, const Entities& entit
   text += "$EndNodes\n";
 }
 
-// One block per entity and element type, surfaces first.
-void append_elements(std::string& text, const Entities& entities) {
-  struct Block {
-    int dim;
-    const Entity* entity;
-    std::size_t begin, end;
-  };
-  std::vector<Block> blocks;
-  long long count = 0, max_tag = 0;
-  for (int dim : {2, 3})
-    for (const Entity& entity : dim == 2 ? entities.part_surfaces : entities.part_volumes) {
-      const auto& elements = entity.elements;
-      for (std::size_t begin = 0, end; begin < elements.size(); begin = end) {
-        for (end = begin + 1; end < elements.size() && elements[end].size == elements[begin].size;)
-          ++end;
-        blocks.push_back({dim, &entity, begin, end});
-      }
-      count += static_cast<long long>(elements.size());
-      for (const Element& e : elements) max_tag = std::max<long long>(max_tag, e.tag);
-    }
-  text += "$Elements\n";
-  for (long long v : {static_cast<long long>(blocks.size()), count, count > 0 ? 1LL : 0LL, max_tag})
-    append_number(text, v), text += ' ';
-  text.back() = '\n';
-  for (const Block& block : blocks) {
-    const int size = block.entity->elements[block.begin].size;
-    const int type = block.dim == 2 ? (size == 3 ? msh::kTriangle : msh::kQuadrangle)
-                                    : (size == 4 ? msh::kTetrahedron : msh::kHexahedron);
-    for (long long v : {block.dim, static_cast<int>(block.entity->tag), type})
-      append_number(text, v), text += ' ';
-    append_number(text, static_cast<long long>(block.end - block.begin));
-    text += '\n';
-    for (std::size_t i = block.begin; i < block.end; ++i) {
-      const Element& e = block.entity->elements[i];
-      append_number(text, e.tag);
-      for (Index v : e.corners()) text += ' ', append_number(text, v + 1);
-      text += '\n';
-    }
-  }
-  text += "$EndElements\n";
-}
-
 }  // namespace
 
 void write_msh_partitioned(const PolyMesh& mesh, std::span<const Index> cell_part, Index parts,
@@ -364,7 +307,10 @@ void write_msh_partitioned(const PolyMesh& mesh, std::span<const Index> cell_par
   append_header(text, entities, parts);
   append_nodes(text, mesh, entities,
                classify_nodes(mesh, cell_part, cells, cell_entity, entities.part_volumes.size()));
-  append_elements(text, entities);
+  std::vector<msh::ElementGroup> groups;
+  for (const Entity& entity : entities.part_surfaces) groups.push_back({2, entity.tag, entity.elements});
+  for (const Entity& entity : entities.part_volumes) groups.push_back({3, entity.tag, entity.elements});
+  msh::append_elements(text, groups);
   write_text_file(path, text);
 }
 

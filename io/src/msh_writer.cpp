@@ -11,6 +11,7 @@
 
 #include "canonical_order.hpp"
 #include "element_export.hpp"
+#include "msh_elements.hpp"
 #include "msh_format.hpp"
 #include "text_format.hpp"
 #include "volmesh/core/convert.hpp"
@@ -23,12 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A Gmsh element: its tag and vertices (3, 4 or 8 of them).
-struct Element {
-  Index tag = 0;
-  int size = 0;
-  std::array<Index, 8> vertices{};
-};
+using msh::Element;
+using msh::make_element;
 
 // A Gmsh entity with its physical group of the same tag, and the elements it holds.
 struct Entity {
@@ -36,13 +33,6 @@ struct Entity {
   std::string name;
   std::vector<Element> elements;
 };
-
-template <typename Loop>
-Element make_element(Index tag, const Loop& loop, std::size_t size) {
-  Element e{tag, static_cast<int>(size), {}};
-  std::copy(loop.begin(), loop.begin() + size, e.vertices.begin());
-  return e;
-}
 
 // Element tag c + 1 for cell c lets the reader restore the cell order.
 std::vector<Entity> volume_entities(const PolyMesh& mesh, const std::vector<CellCorners>& cells,
@@ -98,22 +88,6 @@ std::vector<Entity> surface_entities(const PolyMesh& mesh, const fs::path& path)
       throw InputError(path.string() + ": boundary tag '" + entity.name +
                        "': quotes and line breaks cannot be written to MSH");
   return entities;
-}
-
-// Gmsh blocks hold one element type: smaller elements first. Cells keep their order within
-// a type (it is the cell order the reader restores), faces are sorted by vertices.
-void sort_by_size(std::vector<Entity>& entities) {
-  for (Entity& entity : entities)
-    std::stable_sort(entity.elements.begin(), entity.elements.end(),
-                     [](const Element& a, const Element& b) { return a.size < b.size; });
-}
-
-void sort_by_vertices(std::vector<Entity>& entities) {
-  for (Entity& entity : entities)
-    std::sort(entity.elements.begin(), entity.elements.end(),
-              [](const Element& a, const Element& b) {
-                return std::tie(a.size, a.vertices) < std::tie(b.size, b.vertices);
-              });
 }
 
 void number_elements(std::vector<Entity>& entities, Index first_tag) {
@@ -187,48 +161,6 @@ void append_nodes(std::string& text, const PolyMesh& mesh, const std::vector<Ent
   text += "$EndNodes\n";
 }
 
-void append_elements(std::string& text, const std::vector<Entity>& volumes,
-                     const std::vector<Entity>& surfaces) {
-  struct Block {
-    int dim;
-    const Entity* entity;
-    std::size_t begin, end;
-  };
-  std::vector<Block> blocks;
-  long long count = 0, max_tag = 0;
-  for (const auto* group : {&surfaces, &volumes})
-    for (const Entity& entity : *group) {
-      const auto& elements = entity.elements;
-      for (std::size_t begin = 0, end; begin < elements.size(); begin = end) {
-        for (end = begin + 1; end < elements.size() && elements[end].size == elements[begin].size;)
-          ++end;
-        blocks.push_back({group == &surfaces ? 2 : 3, &entity, begin, end});
-      }
-      count += static_cast<long long>(elements.size());
-      for (const Element& e : elements) max_tag = std::max<long long>(max_tag, e.tag);
-    }
-  text += "$Elements\n";
-  for (long long v : {static_cast<long long>(blocks.size()), count, count > 0 ? 1LL : 0LL, max_tag})
-    append_number(text, v), text += ' ';
-  text.back() = '\n';
-  for (const Block& block : blocks) {
-    const int size = block.entity->elements[block.begin].size;
-    const int type = block.dim == 2 ? (size == 3 ? msh::kTriangle : msh::kQuadrangle)
-                                    : (size == 4 ? msh::kTetrahedron : msh::kHexahedron);
-    for (long long v : {block.dim, static_cast<int>(block.entity->tag), type})
-      append_number(text, v), text += ' ';
-    append_number(text, static_cast<long long>(block.end - block.begin));
-    text += '\n';
-    for (std::size_t i = block.begin; i < block.end; ++i) {
-      const Element& e = block.entity->elements[i];
-      append_number(text, e.tag);
-      for (Index v : std::span(e.vertices.data(), e.size)) text += ' ', append_number(text, v + 1);
-      text += '\n';
-    }
-  }
-  text += "$EndElements\n";
-}
-
 }  // namespace
 
 void write_msh(const PolyMesh& mesh, const fs::path& path) {
@@ -236,14 +168,17 @@ void write_msh(const PolyMesh& mesh, const fs::path& path) {
       classify_elements(mesh, build_cell_faces(mesh), path, "MSH 4.1");
   std::vector<Entity> volumes = volume_entities(mesh, cells, path);
   std::vector<Entity> surfaces = surface_entities(mesh, path);
-  sort_by_size(volumes);
-  sort_by_vertices(surfaces);
+  for (Entity& entity : volumes) msh::sort_by_size(entity.elements);
+  for (Entity& entity : surfaces) msh::sort_by_vertices(entity.elements);
   number_elements(surfaces, mesh.num_cells() + 1);
 
   std::string text;
   append_header(text, mesh, volumes, surfaces);
   append_nodes(text, mesh, volumes);
-  append_elements(text, volumes, surfaces);
+  std::vector<msh::ElementGroup> groups;
+  for (const Entity& entity : surfaces) groups.push_back({2, entity.tag, entity.elements});
+  for (const Entity& entity : volumes) groups.push_back({3, entity.tag, entity.elements});
+  msh::append_elements(text, groups);
   write_text_file(path, text);
 }
 

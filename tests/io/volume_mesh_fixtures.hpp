@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/temp_dir.hpp"
 #include "volmesh/core/poly_mesh.hpp"
 
 namespace volmesh::test {
@@ -28,19 +29,6 @@ void expect_same_mesh(const PolyMesh& expected, const PolyMesh& actual);
 std::map<std::string, long> cell_type_counts(const PolyMesh& mesh);
 
 std::string file_bytes(const std::filesystem::path& path);
-
-// A fresh directory removed at the end of the test.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // Runs a shell command; returns its exit status and puts its stdout in *output.
 int run(const std::string& command, std::string* output);

@@ -13,21 +13,6 @@ namespace {
 using surface::SegmentHit;
 using Hits = std::vector<const SegmentHit*>;
 
-struct Event {
-  double t;
-  std::uint64_t key;  // the face, edge or vertex met: unique over all sheets
-  const SegmentHit* hit;
-};
-
-std::uint64_t feature_key(const surface::SurfaceGeometry& g, const SegmentHit& h) {
-  const int f = static_cast<int>(h.feature);
-  const auto& corners = g.triangles[h.triangle];
-  if (f == 0) return static_cast<std::uint64_t>(h.triangle);
-  if (f >= 4) return std::uint64_t{2} << 62 | static_cast<std::uint64_t>(corners[f - 4]);
-  const std::uint64_t x = corners[f - 1], y = corners[f % 3];
-  return std::uint64_t{1} << 62 | std::min(x, y) << 31 | std::max(x, y);
-}
-
 // The normal at hits between a point with sides `before` and one with sides `after`: the
 // pseudo-normal of the feature met on a sheet whose side changes there — one that alone
 // changes the region if there is one — pointing from before into after.
@@ -63,22 +48,7 @@ std::vector<Crossing> crossings(const Model& m, const Vec3& a, const Vec3& b) {
   const std::vector<SegmentHit> hits = m.hits(a, b);
   if (hits.empty()) return out;  // no sheet met, the box faces included: one region
 
-  Hits at_a, at_b;
-  std::vector<Event> events;
-  for (const SegmentHit& h : hits) {
-    if (h.side_a == 0) at_a.push_back(&h);
-    if (h.side_b == 0) at_b.push_back(&h);
-    if (h.side_a != 0 && h.side_b != 0)
-      events.push_back(
-          {surface::crossing_parameter(m.geometry, a, b, h), feature_key(m.geometry, h), &h});
-  }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const Event& x, const Event& y) { return x.key < y.key; });
-  events.erase(std::unique(events.begin(), events.end(),
-                           [](const Event& x, const Event& y) { return x.key == y.key; }),
-               events.end());
-  std::sort(events.begin(), events.end(),
-            [](const Event& x, const Event& y) { return x.t != y.t ? x.t < y.t : x.key < y.key; });
+  const auto [at_a, at_b, events] = surface::segment_events(m.geometry, a, b, hits);
 
   const Vec3 d = b - a;
   const auto state_at = [&](double t) { return Model::State(m, a + t * d); };

@@ -17,21 +17,6 @@ using surface::DomainData;
 using surface::SegmentHit;
 using States = std::vector<Containment>;
 
-struct Event {
-  double t;
-  std::uint64_t key;  // the face, edge or vertex met: unique over all surfaces
-  const SegmentHit* hit;
-};
-
-std::uint64_t feature_key(const surface::SurfaceGeometry& g, const SegmentHit& h) {
-  const int f = static_cast<int>(h.feature);
-  const auto& corners = g.triangles[h.triangle];
-  if (f == 0) return static_cast<std::uint64_t>(h.triangle);
-  if (f >= 4) return std::uint64_t{2} << 62 | static_cast<std::uint64_t>(corners[f - 4]);
-  const std::uint64_t x = corners[f - 1], y = corners[f % 3];
-  return std::uint64_t{1} << 62 | std::min(x, y) << 31 | std::max(x, y);
-}
-
 // The surface of highest priority (deepest, then highest label) among the hits' for which
 // `pick` holds, or kNoIndex.
 template <class Pick>
@@ -71,22 +56,7 @@ std::vector<Crossing> SurfaceDomain::crossings(const Vec3& a, const Vec3& b) con
 
   // End points in a triangle's plane (on the surface, or running in a face), and one event
   // per feature met strictly between them, from its lowest triangle.
-  std::vector<const SegmentHit*> at_a, at_b;
-  std::vector<Event> events;
-  for (const SegmentHit& h : hits) {
-    if (h.side_a == 0) at_a.push_back(&h);
-    if (h.side_b == 0) at_b.push_back(&h);
-    if (h.side_a != 0 && h.side_b != 0)
-      events.push_back(
-          {surface::crossing_parameter(d.geometry, a, b, h), feature_key(d.geometry, h), &h});
-  }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const Event& x, const Event& y) { return x.key < y.key; });
-  events.erase(std::unique(events.begin(), events.end(),
-                           [](const Event& x, const Event& y) { return x.key == y.key; }),
-               events.end());
-  std::sort(events.begin(), events.end(),
-            [](const Event& x, const Event& y) { return x.t != y.t ? x.t < y.t : x.key < y.key; });
+  const auto [at_a, at_b, events] = surface::segment_events(d.geometry, a, b, hits);
 
   const auto state_at = [&](double t) { return d.exact.containment(a + t * (b - a)); };
   States left = state_at(0.5 * (events.empty() ? 1.0 : events.front().t));

@@ -4,6 +4,7 @@
 // the segment meets each (nowhere, the interior, a side, a corner, or in its plane). The
 // winding number of a point counts the signed crossings of a ray, exactly, shooting again
 // in another direction when the ray meets a side or a corner. CGAL stays in the .cpp.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -49,5 +50,21 @@ class ExactTree {
 // (0 or 1 when an end point lies in it), in [0, 1].
 double crossing_parameter(const SurfaceGeometry& geometry, const Vec3& a, const Vec3& b,
                           const SegmentHit& hit);
+
+// A face interior, edge or vertex the segment meets strictly between its ends.
+struct SegmentEvent {
+  double t;
+  std::uint64_t key;  // the feature met: unique over all surfaces of the geometry
+  const SegmentHit* hit;
+};
+
+// The hits sorted out: those with an end point in the triangle's plane, and one event per
+// feature met between the ends (from its lowest triangle), by increasing t.
+struct SegmentEvents {
+  std::vector<const SegmentHit*> at_a, at_b;
+  std::vector<SegmentEvent> events;
+};
+SegmentEvents segment_events(const SurfaceGeometry& geometry, const Vec3& a, const Vec3& b,
+                             const std::vector<SegmentHit>& hits);
 
 }  // namespace volmesh::surface

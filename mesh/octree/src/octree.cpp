@@ -105,6 +105,26 @@ Index Octree::leaf_containing(const GridPoint& p) const {
   return static_cast<Index>(it - morton_.begin()) - 1;
 }
 
+namespace {
+
+// The neighbour across a face or edge when it is a leaf of the same size anchored at `same`,
+// or a coarser leaf containing `same`; false when the neighbours there are finer.
+template <class Neighbours>
+bool same_or_coarser(const Octree& tree, const GridPoint& same, int level, Neighbours& result) {
+  if (const Index d = tree.find_leaf(same, level); d != kNoIndex) {
+    result.kind = FaceKind::Same;
+    result.leaves[0] = d;
+    return true;
+  }
+  const Index container = tree.leaf_containing(same);
+  if (tree.leaf(container).level >= level) return false;
+  result.kind = FaceKind::Coarser;
+  result.leaves[0] = container;
+  return true;
+}
+
+}  // namespace
+
 FaceNeighbours Octree::face_neighbours(Index leaf, int face) const {
   const OctreeLeaf& c = leaves_[leaf];
   const int axis = face / 2;
@@ -115,17 +135,7 @@ FaceNeighbours Octree::face_neighbours(Index leaf, int face) const {
 
   GridPoint same = c.anchor;
   same[axis] = high ? c.anchor[axis] + s : c.anchor[axis] - s;
-  if (const Index d = find_leaf(same, c.level); d != kNoIndex) {
-    result.kind = FaceKind::Same;
-    result.leaves[0] = d;
-    return result;
-  }
-  const Index container = leaf_containing(same);
-  if (leaves_[container].level < c.level) {
-    result.kind = FaceKind::Coarser;
-    result.leaves[0] = container;
-    return result;
-  }
+  if (same_or_coarser(*this, same, c.level, result)) return result;
   // Finer: the leaf touching each quarter of the face at the quarter's low corner.
   result.kind = FaceKind::Finer;
   const auto [u, v] = other_axes(axis);
@@ -158,17 +168,7 @@ EdgeNeighbours Octree::edge_neighbours(Index leaf, int edge) const {
   GridPoint same = c.anchor;
   same[u] = high_u ? c.anchor[u] + s : c.anchor[u] - s;
   same[v] = high_v ? c.anchor[v] + s : c.anchor[v] - s;
-  if (const Index d = find_leaf(same, c.level); d != kNoIndex) {
-    result.kind = FaceKind::Same;
-    result.leaves[0] = d;
-    return result;
-  }
-  const Index container = leaf_containing(same);
-  if (leaves_[container].level < c.level) {
-    result.kind = FaceKind::Coarser;
-    result.leaves[0] = container;
-    return result;
-  }
+  if (same_or_coarser(*this, same, c.level, result)) return result;
   result.kind = FaceKind::Finer;
   const std::uint32_t half = s / 2;
   for (int k = 0; k < 2; ++k) {

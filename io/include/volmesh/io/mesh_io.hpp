@@ -30,6 +30,9 @@ struct MeshFields {
 // take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell.
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
                 const MeshFields& fields = {});
+// Throws the InputError write_mesh would for a path of no known output format: checked
+// before a long run, so that a typo does not cost it.
+void require_writable_mesh_path(const std::filesystem::path& path);
 // Reads by extension: .vtu, .msh, or an OpenFOAM case (a directory ending in .foam or holding
 // constant/polyMesh, or its .foam marker file).
 PolyMesh read_mesh(const std::filesystem::path& path);
