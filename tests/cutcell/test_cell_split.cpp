@@ -184,5 +184,14 @@ TEST(CellSplit, PublishedM3CUsesTheCellCentre) {
   region_volumes(cube, split);  // closed pieces filling the cube
 }
 
+TEST(MergeAlongEdge, JoinsTwoFacesAcrossTheirOneSharedEdge) {
+  // (0 1 2) and (2 1 3) share 1 -> 2 / 2 -> 1: the quad keeps the orientation of both.
+  EXPECT_EQ(cutcell::merge_along_edge({0, 1, 2}, {2, 1, 3}), (std::vector<int>{2, 0, 1, 3}));
+  EXPECT_TRUE(cutcell::merge_along_edge({0, 1, 2}, {3, 4, 5}).empty());  // no shared edge
+  EXPECT_TRUE(cutcell::merge_along_edge({0, 1, 2}, {1, 2, 3}).empty());  // same direction: not adjacent
+  // Sharing 1 -> 2 but also touching at 4: the union would pass through 4 twice.
+  EXPECT_TRUE(cutcell::merge_along_edge({0, 1, 2, 4}, {2, 1, 4, 5}).empty());
+}
+
 }  // namespace
 }  // namespace volmesh

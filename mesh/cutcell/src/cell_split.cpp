@@ -79,7 +79,7 @@ class Splitter {
   void build_loops();
   int cell_point(const std::vector<int>& face_points);
   std::vector<Candidate> candidates(const Loop& loop);
-  double worst_skewness(const std::vector<std::vector<Triangle>>& triangles) const;
+  double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
   // Puts back the first candidates moved into `triangles`.
   static void options_copy_back(std::vector<std::vector<Candidate>>& options,
                                 const std::vector<std::vector<Triangle>>& triangles) {
@@ -97,9 +97,8 @@ class Splitter {
     return {out_.polygon_piece[s.left_polygon], out_.polygon_piece[s.right_polygon]};
   }
   std::vector<Vec3> piece_centres(const std::vector<std::vector<Triangle>>& triangles) const;
-  double skewness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour, bool outside) const;
+  double badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour, bool outside) const;
   void merge_skewed(std::vector<std::vector<Triangle>>& triangles);
-  static std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b);
   void flip_slivers(std::vector<std::vector<Triangle>>& triangles);
   void emit_triangles(const std::vector<std::vector<Triangle>>& triangles);
 
@@ -396,11 +395,14 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
   return centre;
 }
 
-// OpenFOAM's skewness of triangle t between the pieces with these centres (checkMesh,
-// primitiveMeshTools::faceSkewness and boundaryFaceSkewness), `outside` when the lower
-// side is region 0 and the face a boundary face.
-double Splitter::skewness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
-                          bool outside) const {
+// How far a face between the pieces with these centres is from what checkMesh accepts: the
+// largest of its OpenFOAM skewness over the limit (primitiveMeshTools::faceSkewness and
+// boundaryFaceSkewness), its non-orthogonality over the limit, and kInverted when a centre
+// lies behind it (checkMesh's "incorrectly oriented" face pyramids). Above 1: rejected.
+// `outside` when the lower side is region 0 and the face a boundary face.
+double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
+                         bool outside) const {
+  constexpr double kInverted = 1e3;
   Vec3 centre, area;
   if (face.size() == 3) {
     const Vec3 &a = position_[face[0]], &b = position_[face[1]], &c = position_[face[2]];
@@ -411,8 +413,9 @@ double Splitter::skewness(std::span<const int> face, const Vec3& owner, const Ve
     centre = g.centre;
     area = g.area_vector;
   }
+  if (area.dot(centre - owner) <= 0.0 || (!outside && area.dot(neighbour - centre) <= 0.0)) return kInverted;
   Vec3 offset;
-  double scale;
+  double scale, worst = 0.0;
   if (outside) {
     const Vec3 n = area.normalized();
     const Vec3 along = n * n.dot(centre - owner);
@@ -421,40 +424,44 @@ double Splitter::skewness(std::span<const int> face, const Vec3& owner, const Ve
   } else {
     const Vec3 d = neighbour - owner;
     const double denom = area.dot(d);
-    if (std::abs(denom) < 1e-300) return std::numeric_limits<double>::infinity();
     offset = centre - (owner + area.dot(centre - owner) / denom * d);
     scale = 0.2 * d.norm();
+    worst = std::acos(std::clamp(denom / (area.norm() * d.norm()), -1.0, 1.0)) * (180.0 / std::acos(-1.0)) /
+            options_.max_non_orthogonality;
   }
   const double len = offset.norm();
-  if (len == 0.0) return 0.0;
+  if (len == 0.0) return worst;
   for (int p : face) scale = std::max(scale, std::abs(offset.dot(position_[p] - centre)) / len);
-  return scale > 0.0 ? len / scale : std::numeric_limits<double>::infinity();
+  return std::max(worst, len / scale / options_.skewness_limit);
 }
 
-// The last resort for a face still too skewed: merged with a neighbouring face of its
-// component (sharing one edge, nearly coplanar) into a polygon, as long as that lowers its
-// skewness. The interface does not move; the trace is no longer a triangulation there.
+// The last resort for a face still rejected: merged with a neighbouring face of its
+// component (sharing one edge, nearly coplanar unless it is a sliver) into a polygon, as
+// long as that lowers its badness. The interface does not move; the trace is no longer a
+// triangulation there.
 void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
   const std::vector<Vec3> centre = piece_centres(triangles);
   const double cos_limit = std::cos(options_.merge_angle * std::acos(-1.0) / 180.0);
   for (std::size_t l = 0; l < loops_.size(); ++l) {
     const auto [lower, higher] = loop_pieces(loops_[l]);
     const bool outside = out_.pieces[lower].region == 0;
-    const auto skew = [&](const std::vector<int>& f) { return skewness(f, centre[higher], centre[lower], outside); };
+    const auto skew = [&](const std::vector<int>& f) { return badness(f, centre[higher], centre[lower], outside); };
     std::vector<std::vector<int>> faces;
     for (const Triangle& t : triangles[l]) faces.push_back({t[0], t[1], t[2]});
     for (std::size_t f = 0; f < faces.size(); ++f) {
-      while (!faces[f].empty() && skew(faces[f]) > options_.skewness_limit) {
+      while (!faces[f].empty() && skew(faces[f]) > 1.0) {
         double best = skew(faces[f]);
         std::size_t best_g = faces.size();
         std::vector<int> best_union;
-        const Vec3 nf = polygon_geometry(position_, std::vector<Index>(faces[f].begin(), faces[f].end())).area_vector.normalized();
+        const Vec3 af = polygon_geometry(position_, std::vector<Index>(faces[f].begin(), faces[f].end())).area_vector;
+        const Vec3 nf = af.normalized();
         for (std::size_t g = 0; g < faces.size(); ++g) {
           if (g == f || faces[g].empty()) continue;
           const std::vector<int> merged = merge_along_edge(faces[f], faces[g]);
           if (merged.empty()) continue;
-          const Vec3 ng = polygon_geometry(position_, std::vector<Index>(faces[g].begin(), faces[g].end())).area_vector.normalized();
-          if (nf.dot(ng) < cos_limit) continue;
+          const Vec3 ag = polygon_geometry(position_, std::vector<Index>(faces[g].begin(), faces[g].end())).area_vector;
+          // A sliver's normal means little: it may join a face four times its size at any angle.
+          if (nf.dot(ag.normalized()) < cos_limit && af.norm() > 0.25 * ag.norm()) continue;
           if (const double w = skew(merged); w < best) {
             best = w;
             best_g = g;
@@ -474,29 +481,6 @@ void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
   }
 }
 
-// The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
-// they share none or more, or the union would touch itself.
-std::vector<int> Splitter::merge_along_edge(const std::vector<int>& a, const std::vector<int>& b) {
-  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
-  int shared = 0, ia = -1, ib = -1;
-  for (int i = 0; i < na; ++i)
-    for (int j = 0; j < nb; ++j)
-      if (a[i] == b[(j + 1) % nb] && a[(i + 1) % na] == b[j]) {
-        ++shared;
-        ia = i;
-        ib = j;
-      }
-  if (shared != 1) return {};
-  // a from v around to u, then b from u (exclusive) around to v (exclusive).
-  std::vector<int> out;
-  for (int k = 1; k <= na; ++k) out.push_back(a[(ia + k) % na]);
-  for (int k = 2; k < nb; ++k) out.push_back(b[(ib + k) % nb]);
-  std::vector<int> sorted = out;
-  std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return {};
-  return out;
-}
-
 // Flips the diagonal of two coplanar triangles of a component (the surface does not move)
 // where that lowers the larger skewness of the two: a fan around a feature point running
 // next to a cell face leaves slivers on the flat facets beside it.
@@ -507,7 +491,7 @@ void Splitter::flip_slivers(std::vector<std::vector<Triangle>>& triangles) {
     std::vector<Triangle>& tris = triangles[l];
     const auto [lower, higher] = loop_pieces(loops_[l]);
     const bool outside = out_.pieces[lower].region == 0;
-    const auto skew = [&](const Triangle& t) { return skewness(t, centre[higher], centre[lower], outside); };
+    const auto skew = [&](const Triangle& t) { return badness(t, centre[higher], centre[lower], outside); };
     for (int pass = 0; pass < 4; ++pass) {
       bool flipped = false;
       for (std::size_t i = 0; i < tris.size(); ++i)
@@ -540,14 +524,14 @@ void Splitter::flip_slivers(std::vector<std::vector<Triangle>>& triangles) {
   }
 }
 
-// The worst skewness of the triangles, from the pieces' centres.
-double Splitter::worst_skewness(const std::vector<std::vector<Triangle>>& triangles) const {
+// The worst badness of the triangles, from the pieces' centres.
+double Splitter::worst_badness(const std::vector<std::vector<Triangle>>& triangles) const {
   const std::vector<Vec3> centre = piece_centres(triangles);
   double worst = 0.0;
   for (std::size_t l = 0; l < loops_.size(); ++l) {
     const auto [lower, higher] = loop_pieces(loops_[l]);
     for (const Triangle& t : triangles[l])
-      worst = std::max(worst, skewness(t, centre[higher], centre[lower], out_.pieces[lower].region == 0));
+      worst = std::max(worst, badness(t, centre[higher], centre[lower], out_.pieces[lower].region == 0));
   }
   return worst;
 }
@@ -560,9 +544,9 @@ CellSplit Splitter::run() {
   std::vector<std::size_t> choice(loops_.size(), 0);
   std::vector<std::vector<Triangle>> triangles;
   for (std::size_t l = 0; l < loops_.size(); ++l) triangles.push_back(std::move(options[l][0].triangles));
-  double worst = worst_skewness(triangles);
-  if (worst > options_.skewness_limit) {
-    // A face checkMesh would find too skewed: flip slivers on flat facets, then try the
+  double worst = worst_badness(triangles);
+  if (worst > 1.0) {
+    // A face checkMesh would reject: flip slivers on flat facets, then try the
     // other triangulations, component by component, keeping any that lowers the worst.
     options_copy_back(options, triangles);
     const auto chosen = [&] {
@@ -572,32 +556,32 @@ CellSplit Splitter::run() {
       return t;
     };
     triangles = chosen();
-    worst = worst_skewness(triangles);
-    for (std::size_t l = 0; l < loops_.size() && worst > options_.skewness_limit; ++l)
+    worst = worst_badness(triangles);
+    for (std::size_t l = 0; l < loops_.size() && worst > 1.0; ++l)
       for (std::size_t c = 0; c < options[l].size(); ++c) {
         if (c == choice[l]) continue;
         const std::size_t kept = choice[l];
         choice[l] = c;
         std::vector<std::vector<Triangle>> t = chosen();
-        if (const double w = worst_skewness(t); w < worst) {
+        if (const double w = worst_badness(t); w < worst) {
           worst = w;
           triangles = std::move(t);
         } else {
           choice[l] = kept;
         }
       }
-    if (worst > options_.skewness_limit && options_.merge_angle > 0.0) {
+    if (worst > 1.0 && options_.merge_angle > 0.0) {
       merge_skewed(triangles);
       const std::vector<Vec3> centre = piece_centres(triangles);
-      worst = worst_skewness(triangles);
+      worst = worst_badness(triangles);
       for (const PiecePolygon& p : out_.polygons)
-        worst = std::max(worst, skewness(p.points, centre[p.higher], centre[p.lower],
+        worst = std::max(worst, badness(p.points, centre[p.higher], centre[p.lower],
                                          out_.pieces[p.lower].region == 0));
     }
   }
   for (std::size_t l = 0; l < loops_.size(); ++l) out_.loops.push_back(options[l][choice[l]].method);
   emit_triangles(triangles);
-  out_.max_skewness = worst;
+  out_.max_badness = worst;
   return std::move(out_);
 }
 
@@ -642,6 +626,29 @@ std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, 
 
 CellSplit split_cell(const CellInput& cell, const CellOptions& options) {
   return Splitter(cell, options).run();
+}
+
+// The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
+// they share none or more, or the union would touch itself.
+std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b) {
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  int shared = 0, ia = -1, ib = -1;
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < nb; ++j)
+      if (a[i] == b[(j + 1) % nb] && a[(i + 1) % na] == b[j]) {
+        ++shared;
+        ia = i;
+        ib = j;
+      }
+  if (shared != 1) return {};
+  // a from v around to u, then b from u (exclusive) around to v (exclusive).
+  std::vector<int> out;
+  for (int k = 1; k <= na; ++k) out.push_back(a[(ia + k) % na]);
+  for (int k = 2; k < nb; ++k) out.push_back(b[(ib + k) % nb]);
+  std::vector<int> sorted = out;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return {};
+  return out;
 }
 
 }  // namespace volmesh::cutcell

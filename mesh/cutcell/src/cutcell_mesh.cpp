@@ -3,12 +3,15 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <chrono>
+#include <cmath>
 #include <string>
 
+#include "agglomerate.hpp"
 #include "assemble.hpp"
 #include "cut_grid.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {
 namespace {
@@ -119,7 +122,6 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   for (const FaceResult& r : grid.results) st.face_point_fallbacks += r.contour.point_left_face;
   for (const LeafCut& c : cuts) {
     st.cell_point_fallbacks += c.split.cell_point_left_cell;
-    st.max_skewness = std::max(st.max_skewness, c.split.max_skewness);
     st.merged_faces += static_cast<Index>(c.split.polygons.size());
     for (LoopMethod m : c.split.loops) {
       st.feature_points += m == LoopMethod::feature_fan;
@@ -138,14 +140,30 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
     throw InputError("cutcell: no cell lies inside the domain at level " + std::to_string(st.level) +
                      " (the domain is thinner than a cell); raise the level");
 
-  // Smallest cell relative to its leaf.
+  std::vector<double> cell_size(mesh.num_cells());
+  for (Index c = 0; c < mesh.num_cells(); ++c) cell_size[c] = tree.cell_size(tree.leaf(assembly.cell_leaf[c]).level);
+  if (options.merge_rounds > 0) {
+    progress("merging", 0.9);
+    AgglomerationOptions merging;
+    merging.skewness_limit = options.skewness_limit;
+    merging.min_volume_ratio = options.merge_volume_ratio;
+    merging.rounds = options.merge_rounds;
+    const AgglomerationStats merged = agglomerate(mesh, cell_size, merging);
+    st.merged_cells = merged.merged;
+    st.joined_faces = merged.joined;
+    st.bad_faces = merged.bad_faces;
+  }
+
+  // Smallest cell relative to its leaf, and checkMesh's measures.
   const MeshGeometry geometry = mesh_geometry(mesh, build_cell_faces(mesh));
   double ratio = std::numeric_limits<double>::infinity();
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const double h = tree.cell_size(tree.leaf(assembly.cell_leaf[c]).level);
-    ratio = std::min(ratio, geometry.cells[c].volume / (h * h * h));
-  }
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    ratio = std::min(ratio, geometry.cells[c].volume / std::pow(cell_size[c], 3));
   st.min_cell_volume_ratio = ratio;
+  for (const double s : face_skewness(mesh, geometry)) st.max_skewness = std::max(st.max_skewness, s);
+  const std::vector<double> angle = face_non_orthogonality(mesh, geometry);
+  for (Index f = 0; f < mesh.num_faces(); ++f)
+    if (!mesh.is_boundary(f)) st.max_non_orthogonality = std::max(st.max_non_orthogonality, angle[f]);
   st.max_leaf_level = tree.max_leaf_level();
   st.leaves = tree.num_leaves();
   st.cells = mesh.num_cells();

@@ -81,7 +81,8 @@ class Mover {
     return out;
   }
   double clearance_at(const Vec3& p, Index region, const Around& around,
-                      const std::vector<double>& far_before) const;
+                      const std::vector<double>& far_before,
+                      const std::vector<std::size_t>& crossings_before) const;
   bool move(Index v);
 
   Grid& grid_;
@@ -91,10 +92,12 @@ class Mover {
 
 // The clearance a position p (region `region`) leaves: the smallest fraction of an edge at v
 // between p, or a far end that is not still to be moved, and a crossing; negative when an edge
-// would be crossed other than its end regions require (none, or once between them) or a split
-// leaf edge would change region twice.
+// would be crossed other than its end regions require (none, or once between them) and more
+// often than before the move (an edge through a junction, or a layer thinner than the cell,
+// may already be crossed twice), or a split leaf edge would change region twice.
 double Mover::clearance_at(const Vec3& p, Index region, const Around& around,
-                           const std::vector<double>& far_before) const {
+                           const std::vector<double>& far_before,
+                           const std::vector<std::size_t>& crossings_before) const {
   for (const auto& [m, far] : around.split_edges)
     if (region != grid_.region[m] && grid_.region[m] != grid_.region[far]) return -1.0;
   double clear = 1.0;
@@ -102,13 +105,11 @@ double Mover::clearance_at(const Vec3& p, Index region, const Around& around,
   for (std::size_t k = 0; k < ends.size(); ++k) {
     const Index w = ends[k];
     const std::vector<Crossing> hits = transversal(p, grid_.position[w]);
-    if (region == grid_.region[w]) {
-      if (!hits.empty()) return -1.0;
-      continue;
-    }
-    if (hits.size() != 1) return -1.0;
-    clear = std::min(clear, hits[0].t);
-    const double far = 1.0 - hits[0].t;
+    const std::size_t required = region == grid_.region[w] ? 0 : 1;
+    if (hits.size() != required && (hits.size() < required || hits.size() > crossings_before[k])) return -1.0;
+    if (hits.empty()) continue;
+    clear = std::min(clear, hits.front().t);
+    const double far = 1.0 - hits.back().t;
     if (far < clearance_ && far < far_before[k] && state_[w] != pending) clear = std::min(clear, far);
   }
   return clear;
@@ -120,6 +121,7 @@ bool Mover::move(Index v) {
   const Vec3 x = grid_.position[v];
   Nearest nearest;
   std::vector<double> far_before(ends.size(), 1.0);
+  std::vector<std::size_t> crossings_before(ends.size(), 0);
   double shortest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < ends.size(); ++k) {
     const Vec3& y = grid_.position[ends[k]];
@@ -127,6 +129,7 @@ bool Mover::move(Index v) {
     const std::vector<Crossing> hits = transversal(x, y);
     if (hits.empty()) continue;
     far_before[k] = 1.0 - hits.back().t;
+    crossings_before[k] = hits.size();
     if (grid_.region[ends[k]] == grid_.region[v]) continue;
     if (!nearest.found || hits.front().t < nearest.fraction) nearest = {hits.front().t, hits.front(), true};
   }
@@ -148,13 +151,21 @@ bool Mover::move(Index v) {
     for (const double side : {-1.0, 1.0}) candidates.push_back(at + side * scale * step * n);
   for (int axis = 0; axis < 3; ++axis)
     for (const double side : {-1.0, 1.0}) candidates.push_back(x + side * step * Vec3::Unit(axis));
+  // Where several interfaces meet (a plane through a sphere), away from all of them: the
+  // diagonal directions, then twice as far.
+  for (const double scale : {1.0, 2.0})
+    for (int k = 0; k < 27; ++k) {
+      const Vec3 d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+      if ((scale == 1.0 && d.cwiseAbs().sum() < 2.0) || d.isZero()) continue;
+      candidates.push_back(x + scale * step * d.normalized());
+    }
   double best = nearest.fraction;
   bool resolved = false;
   std::optional<std::pair<Vec3, Index>> chosen;
   for (const Vec3& p : candidates) {
     const Index region = grid_.domain->region(p);
     if (hanging && region != own) continue;
-    const double clear = clearance_at(p, region, around, far_before);
+    const double clear = clearance_at(p, region, around, far_before, crossings_before);
     if (clear >= clearance_) {
       chosen = {p, region};
       resolved = true;

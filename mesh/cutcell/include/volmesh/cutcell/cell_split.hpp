@@ -67,8 +67,10 @@ struct CellOptions {
   // may swap their diagonal (the surface stays put) when that lowers their skewness.
   double flat = 1e-6;
   // When a triangle is more skewed than this (OpenFOAM's measure; checkMesh flags faces
-  // above 4), the other triangulations of each component are tried.
+  // above 4), more non-orthogonal (degrees; checkMesh fails at 90) or behind a piece's
+  // centre, the other triangulations of each component are tried.
   double skewness_limit = 4.0;
+  double max_non_orthogonality = 88.0;
   // The last resort for a triangle still more skewed: merged with neighbouring triangles of
   // its interface whose normals differ by less than this angle (degrees) into one polygon
   // face. 0 keeps the trace a triangulation everywhere.
@@ -113,13 +115,19 @@ struct CellSplit {
   std::vector<int> polygon_piece;  // the piece of each input polygon
   std::vector<LoopMethod> loops;   // how each component was triangulated
   bool cell_point_left_cell = false;  // the least-squares cell point fell outside; centroid used
-  // Largest OpenFOAM skewness of the triangles (checkMesh flags faces above 4), from the
-  // pieces' centres; a boundary triangle (region 0 below) as checkMesh measures those.
-  double max_skewness = 0.0;
+  // How far the worst interface face is from checkMesh's limits, from the pieces' centres:
+  // max(skewness / skewness_limit, non-orthogonality / max_non_orthogonality), 1e3 for a
+  // face behind a centre; above 1: rejected. Boundary faces (region 0 below) as checkMesh
+  // measures those.
+  double max_badness = 0.0;
 };
 
 // Throws std::logic_error when the contour does not close (inconsistent input).
 CellSplit split_cell(const CellInput& cell, const CellOptions& options = {});
+
+// The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
+// they share none or more, or the union would touch itself.
+std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b);
 
 // Distance of p inside the hexahedron with these corners (negative outside), measured from
 // the planes of its faces (through their centres, along their mean normals).

@@ -33,6 +33,13 @@ struct CutcellOptions {
   // Tiny cut cells: a grid vertex whose nearest crossing along an edge lies closer than
   // this fraction of the edge is moved off the interface (exact mode only).
   double vertex_clearance = 0.1;
+  // Cells that checkMesh would reject (skewness above skewness_limit, an inverted face
+  // pyramid, non-orthogonality of 88° or more) or smaller than merge_volume_ratio * h^3
+  // are merged with one or two neighbours of their region, and a rejected face may be
+  // joined with a face beside it between the same cells, in at most merge_rounds passes
+  // (0: never). No point moves.
+  int merge_rounds = 16;
+  double merge_volume_ratio = 1e-3;
   double feature_theta = 0.9;  // Kobbelt's sharp-feature thresholds
   double feature_phi = 0.7;
   // Called with a stage name and the fraction of the run done, from the calling thread.
@@ -56,8 +63,12 @@ struct CutcellStats {
   Index cell_points = 0;         // cell interface points
   Index centroid_fans = 0, across_face_triangulations = 0;
   double min_cell_volume_ratio = 0.0;  // smallest cell volume / h^3, h its leaf's edge
-  double max_skewness = 0.0;           // of the cut faces inside leaves (OpenFOAM's measure)
+  double max_skewness = 0.0;           // of all faces of the mesh (OpenFOAM's measure)
+  double max_non_orthogonality = 0.0;  // degrees, internal faces (checkMesh's measure)
   Index merged_faces = 0;  // polygons made of interface triangles too skewed on their own
+  Index merged_cells = 0;  // merges of a cell into neighbours (CutcellOptions::merge_rounds)
+  Index joined_faces = 0;  // faces joined with a neighbouring face between the same cells
+  Index bad_faces = 0;     // faces still beyond checkMesh's limits after the merging
   double octree_seconds = 0.0, cut_seconds = 0.0, total_seconds = 0.0;
 };
 

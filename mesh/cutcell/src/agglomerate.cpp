@@ -1,0 +1,384 @@
+#include "agglomerate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <utility>
+
+#include "volmesh/core/geometry.hpp"
+#include "volmesh/cutcell/cell_split.hpp"
+
+namespace volmesh::cutcell {
+namespace {
+
+// OpenFOAM's ROOTVSMALL in the skewness formula, as volmesh's quality report keeps it.
+constexpr double kRootVSmall = 1e-150;
+// Score of a face whose pyramid on either cell is inverted (a centre behind it): above every
+// skewness that a merge would trade it for.
+constexpr double kInverted = 1e3;
+
+class Agglomerator {
+ public:
+  Agglomerator(PolyMesh& mesh, std::vector<double>& size, const AgglomerationOptions& options)
+      : mesh_(mesh), size_(size), options_(options) {
+    const CellFaces cf = build_cell_faces(mesh);
+    face_.resize(mesh.num_faces());
+    for (Index f = 0; f < mesh.num_faces(); ++f) face_[f] = face_geometry(mesh, f);
+    faces_of_.resize(mesh.num_cells());
+    cell_.resize(mesh.num_cells());
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      faces_of_[c].assign(cf.of(c).begin(), cf.of(c).end());
+      cell_[c] = union_geometry(std::span<const Index>(&c, 1));
+    }
+    face_alive_.assign(mesh.num_faces(), 1);
+    loops_.resize(mesh.num_faces());
+    for (Index f = 0; f < mesh.num_faces(); ++f) loops_[f].assign(mesh.face(f).begin(), mesh.face(f).end());
+    cell_alive_.assign(mesh.num_cells(), 1);
+    angle_limit_ = options.max_non_orthogonality * std::numbers::pi / 180.0;
+  }
+  AgglomerationStats run();
+
+ private:
+  double score(const FaceGeometry& g, std::span<const Index> loop, const Vec3& owner,
+               const Vec3* neighbour) const;
+  double score(Index f, const Vec3& owner, const Vec3* neighbour) const {
+    return score(face_[f], loops_[f], owner, neighbour);
+  }
+  bool join_faces(Index f);
+  double face_score(Index f) const {
+    const Index n = mesh_.neighbour[f];
+    return score(f, cell_[mesh_.owner[f]].centre, n == kNoIndex ? nullptr : &cell_[n].centre);
+  }
+  double worst_of(Index c) const {
+    double w = 0.0;
+    for (Index f : faces_of_[c]) w = std::max(w, face_score(f));
+    return w;
+  }
+  Index other_side(Index f, Index c) const { return mesh_.owner[f] == c ? mesh_.neighbour[f] : mesh_.owner[f]; }
+  CellGeometry union_geometry(std::span<const Index> cells) const;
+  // Cells to merge into one: up to three, the unused slots kNoIndex.
+  using Group = std::array<Index, 3>;
+  static std::span<const Index> cells_of(const Group& g) {
+    return {g.data(), static_cast<std::size_t>(g[1] == kNoIndex ? 1 : g[2] == kNoIndex ? 2 : 3)};
+  }
+  double merged_worst(std::span<const Group> groups) const;
+  std::vector<Index> region_neighbours(Index c) const;
+  std::vector<Group> groups_around(Index x) const;
+  void merge_groups(std::span<const Group> groups);
+  bool merge_best(const std::vector<std::vector<Group>>& candidates, bool tiny);
+  bool try_merge(Index x, bool tiny);
+  void merge(Index x, Index y);
+  void rebuild();
+
+  PolyMesh& mesh_;
+  std::vector<double>& size_;
+  const AgglomerationOptions& options_;
+  double angle_limit_ = 0.0;  // radians
+  std::vector<FaceGeometry> face_;
+  std::vector<CellGeometry> cell_;
+  std::vector<std::vector<Index>> faces_of_;
+  std::vector<char> face_alive_, cell_alive_;
+  std::vector<std::vector<Index>> loops_;  // faces joined by join_faces grow
+};
+
+// max(skewness / limit, non-orthogonality / limit), or kInverted and more when a centre lies
+// behind the face (an inverted face pyramid): above 1 where checkMesh would complain. Skewness as primitiveMeshTools::faceSkewness and
+// boundaryFaceSkewness define it (volmesh's quality report computes the same).
+double Agglomerator::score(const FaceGeometry& g, std::span<const Index> loop, const Vec3& owner,
+                           const Vec3* neighbour) const {
+  const Vec3& s = g.area_vector;
+  const Vec3 cpf = g.centre - owner;
+  // Inverted: kInverted and more the farther a centre lies behind, so that a merge that
+  // moves it only part of the way back counts as progress.
+  double behind = s.dot(cpf) / (s.norm() * cpf.norm() + kRootVSmall);
+  if (neighbour) {
+    const Vec3 cnf = *neighbour - g.centre;
+    behind = std::min(behind, s.dot(cnf) / (s.norm() * cnf.norm() + kRootVSmall));
+  }
+  if (behind <= 0.0) return kInverted * (1.0 - behind);
+  Vec3 d;
+  double factor;
+  double worst = 0.0;
+  if (neighbour) {
+    d = *neighbour - owner;
+    factor = 0.2;
+    const double cosine = d.dot(s) / (d.norm() * s.norm() + kRootVSmall);
+    worst = std::acos(std::clamp(cosine, -1.0, 1.0)) / angle_limit_;
+  } else {
+    const Vec3 n = s / (s.norm() + kRootVSmall);
+    d = n * n.dot(cpf);
+    factor = 0.4;
+  }
+  const Vec3 sv = cpf - (s.dot(cpf) / (s.dot(d) + kRootVSmall)) * d;
+  const Vec3 sv_hat = sv / (sv.norm() + kRootVSmall);
+  double extent = factor * d.norm() + kRootVSmall;
+  for (Index v : loop) extent = std::max(extent, std::abs(sv_hat.dot(mesh_.points[v] - g.centre)));
+  return std::max(worst, sv.norm() / extent / options_.skewness_limit);
+}
+
+// Volume and centre of the union of the cells as checkMesh computes them
+// (primitiveMeshCellCentresAndVols): pyramids from the mean of the face centres to each
+// face, each with its centroid at 3/4 of the way to the face centre. On a warped face this
+// differs from the exact centroid, and checkMesh's verdict follows this one.
+CellGeometry Agglomerator::union_geometry(std::span<const Index> cells) const {
+  const auto inside = [&cells](Index c) { return std::find(cells.begin(), cells.end(), c) != cells.end(); };
+  Vec3 estimate = Vec3::Zero();
+  int count = 0;
+  for (const Index c : cells)
+    for (Index f : faces_of_[c])
+      if (const Index o = other_side(f, c); o == kNoIndex || !inside(o)) {
+        estimate += face_[f].centre;
+        ++count;
+      }
+  estimate /= static_cast<double>(std::max(count, 1));
+  double volume = 0.0;
+  Vec3 moment = Vec3::Zero();
+  for (const Index c : cells)
+    for (Index f : faces_of_[c])
+      if (const Index o = other_side(f, c); o == kNoIndex || !inside(o)) {
+        const double sign = mesh_.owner[f] == c ? 1.0 : -1.0;
+        const double v = sign * face_[f].area_vector.dot(face_[f].centre - estimate) / 3.0;
+        volume += v;
+        moment += v * (0.75 * face_[f].centre + 0.25 * estimate);
+      }
+  return {volume, volume != 0.0 ? Vec3(moment / volume) : estimate};
+}
+
+// The worst score of the faces around the groups of cells (disjoint), each group merged into
+// one cell with the centre union_geometry gives it.
+double Agglomerator::merged_worst(std::span<const Group> groups) const {
+  std::vector<std::pair<Index, Vec3>> centre;
+  for (const Group& g : groups) {
+    const Vec3 c = union_geometry(cells_of(g)).centre;
+    for (Index x : cells_of(g)) centre.emplace_back(x, c);
+  }
+  const auto centre_of = [&](Index c) -> const Vec3& {
+    for (const auto& [x, p] : centre)
+      if (x == c) return p;
+    return cell_[c].centre;
+  };
+  const auto group_of = [&](Index c) {
+    for (std::size_t k = 0; k < groups.size(); ++k)
+      for (Index x : cells_of(groups[k]))
+        if (x == c) return static_cast<int>(k);
+    return -1;
+  };
+  double worst = 0.0;
+  for (std::size_t k = 0; k < groups.size(); ++k)
+    for (const Index c : cells_of(groups[k]))
+      for (Index f : faces_of_[c]) {
+        const Index o = other_side(f, c);
+        if (o != kNoIndex && group_of(o) == static_cast<int>(k)) continue;
+        const Index owner = mesh_.owner[f];
+        worst = std::max(worst, o == kNoIndex ? score(f, centre_of(c), nullptr)
+                                              : score(f, centre_of(owner), &centre_of(mesh_.neighbour[f])));
+      }
+  return worst;
+}
+
+// The neighbours of c in its region.
+std::vector<Index> Agglomerator::region_neighbours(Index c) const {
+  std::vector<Index> out;
+  for (Index f : faces_of_[c]) {
+    const Index y = other_side(f, c);
+    if (y != kNoIndex && mesh_.cell_region[y] == mesh_.cell_region[c] &&
+        std::find(out.begin(), out.end(), y) == out.end())
+      out.push_back(y);
+  }
+  return out;
+}
+
+// x with a neighbour of its region, or with two (both neighbours of x, or one through the
+// other): a thin piece wrapped around a cell of another region may need two to pull its
+// centre back.
+std::vector<Agglomerator::Group> Agglomerator::groups_around(Index x) const {
+  const std::vector<Index> near = region_neighbours(x);
+  std::vector<Group> out;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    out.push_back({x, near[i], kNoIndex});
+    for (std::size_t j = i + 1; j < near.size(); ++j) out.push_back({x, near[i], near[j]});
+    for (Index z : region_neighbours(near[i]))
+      if (z != x && std::find(near.begin(), near.end(), z) == near.end()) out.push_back({x, near[i], z});
+  }
+  return out;
+}
+
+// Merges the groups, each into its largest cell.
+void Agglomerator::merge_groups(std::span<const Group> groups) {
+  for (const Group& g : groups) {
+    Index into = g[0];
+    for (Index c : cells_of(g))
+      if (cell_[c].volume > cell_[into].volume) into = c;
+    for (Index c : cells_of(g))
+      if (c != into) merge(c, into);
+    cell_[into] = union_geometry(std::span<const Index>(&into, 1));
+  }
+}
+
+// The best of the candidate merges when it is better than the cells were (a tiny cell: not
+// beyond the limits, or no worse). A second neighbour only where one does not do.
+bool Agglomerator::merge_best(const std::vector<std::vector<Group>>& candidates, bool tiny) {
+  const std::vector<Group>* best = nullptr;
+  double best_rank = std::numeric_limits<double>::infinity(), best_worst = best_rank;
+  for (const std::vector<Group>& groups : candidates) {
+    std::size_t cells = 0;
+    for (const Group& g : groups) cells += cells_of(g).size();
+    const double w = merged_worst(groups);
+    if (const double rank = w * (1.0 + 0.01 * static_cast<double>(cells - 2)); rank < best_rank) {
+      best_rank = rank;
+      best_worst = w;
+      best = &groups;
+    }
+  }
+  if (!best) return false;
+  double before = 0.0;
+  for (const Group& g : *best)
+    for (Index c : cells_of(g)) before = std::max(before, worst_of(c));
+  if (!(best_worst < before || (tiny && best_worst <= 1.0))) return false;
+  merge_groups(*best);
+  return true;
+}
+
+bool Agglomerator::try_merge(Index x, bool tiny) {
+  std::vector<std::vector<Group>> candidates;
+  for (const Group& g : groups_around(x)) candidates.push_back({g});
+  return merge_best(candidates, tiny);
+}
+
+// A face beyond the limits between two cells joined with a face beside it between the same
+// two cells (sharing one edge) into one polygon, while that lowers its score: a sliver
+// triangle's normal is all but arbitrary, the polygon's is that of the patch.
+bool Agglomerator::join_faces(Index f) {
+  const Index owner = mesh_.owner[f], neighbour = mesh_.neighbour[f];
+  bool joined = false;
+  for (;;) {
+    const Vec3* nc = neighbour == kNoIndex ? nullptr : &cell_[neighbour].centre;
+    double best = face_score(f);
+    if (best <= 1.0) return joined;
+    Index best_g = kNoIndex;
+    std::vector<Index> best_loop;
+    FaceGeometry best_geometry{};
+    for (Index g : faces_of_[owner]) {
+      if (g == f || other_side(g, owner) != neighbour || mesh_.face_tag[g] != mesh_.face_tag[f]) continue;
+      std::vector<Index> other = loops_[g];
+      if (mesh_.owner[g] != owner) std::reverse(other.begin(), other.end());
+      std::vector<Index> merged = merge_along_edge(loops_[f], other);
+      if (merged.empty()) continue;
+      const FaceGeometry geometry = polygon_geometry(mesh_.points, merged);
+      if (const double w = score(geometry, merged, cell_[owner].centre, nc); w < best) {
+        best = w;
+        best_g = g;
+        best_loop = std::move(merged);
+        best_geometry = geometry;
+      }
+    }
+    if (best_g == kNoIndex) return joined;
+    loops_[f] = std::move(best_loop);
+    face_[f] = best_geometry;
+    face_alive_[best_g] = 0;
+    for (const Index c : {owner, neighbour})
+      if (c != kNoIndex) {
+        std::erase(faces_of_[c], best_g);
+        cell_[c] = union_geometry(std::span<const Index>(&c, 1));
+      }
+    joined = true;
+  }
+}
+
+// y absorbs x: their shared faces go, x's other faces turn to y.
+void Agglomerator::merge(Index x, Index y) {
+  std::vector<Index>& into = faces_of_[y];
+  for (Index f : faces_of_[x]) {
+    if (other_side(f, x) == y) {
+      face_alive_[f] = 0;
+      std::erase(into, f);
+      continue;
+    }
+    (mesh_.owner[f] == x ? mesh_.owner[f] : mesh_.neighbour[f]) = y;
+    into.push_back(f);
+  }
+  faces_of_[x].clear();
+  size_[y] = std::max(size_[x], size_[y]);
+  cell_alive_[x] = 0;
+}
+
+// The mesh without the merged cells, the removed faces and the points no face uses.
+void Agglomerator::rebuild() {
+  std::vector<Index> cell_id(mesh_.num_cells(), kNoIndex);
+  PolyMesh out;
+  std::vector<double> sizes;
+  for (Index c = 0; c < mesh_.num_cells(); ++c)
+    if (cell_alive_[c]) {
+      cell_id[c] = static_cast<Index>(out.cell_region.size());
+      out.cell_region.push_back(mesh_.cell_region[c]);
+      sizes.push_back(size_[c]);
+    }
+  std::vector<Index> point_id(mesh_.num_points(), kNoIndex);
+  for (Index f = 0; f < mesh_.num_faces(); ++f)
+    if (face_alive_[f])
+      for (Index v : loops_[f]) point_id[v] = 0;
+  for (Index v = 0; v < mesh_.num_points(); ++v)
+    if (point_id[v] == 0) {
+      point_id[v] = static_cast<Index>(out.points.size());
+      out.points.push_back(mesh_.points[v]);
+    }
+  out.tag_names = mesh_.tag_names;
+  std::vector<Index> loop;
+  for (Index f = 0; f < mesh_.num_faces(); ++f) {
+    if (!face_alive_[f]) continue;
+    loop.clear();
+    for (Index v : loops_[f]) loop.push_back(point_id[v]);
+    const Index n = mesh_.neighbour[f];
+    out.add_face(loop, cell_id[mesh_.owner[f]], n == kNoIndex ? kNoIndex : cell_id[n], mesh_.face_tag[f]);
+  }
+  mesh_ = std::move(out);
+  size_ = std::move(sizes);
+}
+
+AgglomerationStats Agglomerator::run() {
+  AgglomerationStats stats;
+  const Index nc = mesh_.num_cells(), nf = mesh_.num_faces();
+  for (int round = 0; round < options_.rounds; ++round) {
+    // The cells beside a face beyond the limits, worst first, then the tiny cells.
+    std::vector<std::pair<double, Index>> bad;
+    std::vector<Index> rejected;
+    for (Index f = 0; f < nf; ++f) {
+      if (!face_alive_[f]) continue;
+      const double s = face_score(f);
+      if (s <= 1.0) continue;
+      rejected.push_back(f);
+      bad.emplace_back(s, mesh_.owner[f]);
+      if (mesh_.neighbour[f] != kNoIndex) bad.emplace_back(s, mesh_.neighbour[f]);
+    }
+    std::sort(bad.begin(), bad.end(), [](const auto& a, const auto& b) { return a > b; });
+    std::vector<Index> tiny;
+    for (Index c = 0; c < nc; ++c)
+      if (cell_alive_[c] && cell_[c].volume < options_.min_volume_ratio * std::pow(size_[c], 3)) tiny.push_back(c);
+    Index merged = 0, joined = 0;
+    for (Index f : rejected)
+      if (face_alive_[f]) joined += join_faces(f);
+    for (const auto& [s, c] : bad)
+      if (cell_alive_[c] && worst_of(c) > 1.0) merged += try_merge(c, false);
+    for (Index c : tiny)
+      if (cell_alive_[c] && cell_[c].volume < options_.min_volume_ratio * std::pow(size_[c], 3))
+        merged += try_merge(c, true);
+    stats.merged += merged;
+    stats.joined += joined;
+    if (merged == 0 && joined == 0) break;
+  }
+  for (Index f = 0; f < nf; ++f) stats.bad_faces += face_alive_[f] && face_score(f) > 1.0;
+  if (stats.merged > 0 || stats.joined > 0) rebuild();
+  return stats;
+}
+
+}  // namespace
+
+AgglomerationStats agglomerate(PolyMesh& mesh, std::vector<double>& cell_size,
+                               const AgglomerationOptions& options) {
+  return Agglomerator(mesh, cell_size, options).run();
+}
+
+}  // namespace volmesh::cutcell
