@@ -1,0 +1,305 @@
+// Exact distances to, sharp edges of and samples on the analytic primitives (analytic.hpp),
+// for measuring how far a mesh is from the TRUE surface.
+#include <cmath>
+#include <numbers>
+
+#include "geometric_error.hpp"
+
+namespace volmesh::geometry {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+
+Vec3 to_local(const Primitive& primitive, const Vec3& p) {
+  return primitive.frame.rotation.transpose() * (p - primitive.frame.translation);
+}
+
+// Distance from q to the segment between a and b.
+double segment_distance(const Vec3& q, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (q - (a + t * d)).norm();
+}
+
+double box_distance(const Box& box, const Vec3& q) {
+  const Vec3 outside = (box.lo - q).cwiseMax(q - box.hi).cwiseMax(0.0);
+  if (outside.squaredNorm() > 0.0) return outside.norm();
+  return (q - box.lo).cwiseMin(box.hi - q).minCoeff();
+}
+
+// The rectangle [0, r] x [z0, z1] in (distance from the axis, z), without its axis side.
+double cylinder_distance(const Cylinder& c, const Vec3& q) {
+  const double rho = std::hypot(q.x(), q.y());
+  const double out_r = std::max(rho - c.radius, 0.0);
+  const double out_z = std::max({c.z0 - q.z(), q.z() - c.z1, 0.0});
+  if (out_r > 0.0 || out_z > 0.0) return std::hypot(out_r, out_z);
+  return std::min({c.radius - rho, q.z() - c.z0, c.z1 - q.z()});
+}
+
+double box_edges_distance(const Box& box, const Vec3& q) {
+  double best = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int corner = 0; corner < 4; ++corner) {
+      Vec3 a = box.lo;
+      a[u] = (corner & 1) ? box.hi[u] : box.lo[u];
+      a[v] = (corner & 2) ? box.hi[v] : box.lo[v];
+      Vec3 b = a;
+      b[axis] = box.hi[axis];
+      best = std::min(best, segment_distance(q, a, b));
+    }
+  }
+  return best;
+}
+
+// Points i / n for i = 0..n (both ends) of [a, b], n >= 1 steps no longer than spacing.
+std::vector<double> steps(double a, double b, double spacing) {
+  const int n = std::max(1, static_cast<int>(std::ceil((b - a) / spacing)));
+  std::vector<double> out(n + 1);
+  for (int i = 0; i <= n; ++i) out[i] = a + (b - a) * i / n;
+  return out;
+}
+
+// Angles 2 pi i / n, i < n, n >= `minimum` steps no longer than spacing on a circle of radius r.
+std::vector<double> angles(double r, double spacing, int minimum = 3) {
+  const int n = std::max(minimum, static_cast<int>(std::ceil(2.0 * kPi * r / spacing)));
+  std::vector<double> out(n);
+  for (int i = 0; i < n; ++i) out[i] = 2.0 * kPi * i / n;
+  return out;
+}
+
+// Fibonacci points on the unit sphere, about `count` of them evenly spread.
+std::vector<Vec3> fibonacci_sphere(double count) {
+  const int n = std::max(8, static_cast<int>(std::ceil(count)));
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
+  std::vector<Vec3> out(n);
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(1.0 - z * z);
+    out[i] = Vec3(r * std::cos(golden * i), r * std::sin(golden * i), z);
+  }
+  return out;
+}
+
+std::vector<SurfacePoint> box_samples(const Box& box, double spacing) {
+  std::vector<SurfacePoint> out;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (const double side : {-1.0, 1.0}) {
+      Vec3 normal = Vec3::Zero();
+      normal[axis] = side;
+      for (const double a : steps(box.lo[u], box.hi[u], spacing))
+        for (const double b : steps(box.lo[v], box.hi[v], spacing)) {
+          Vec3 p;
+          p[axis] = side < 0 ? box.lo[axis] : box.hi[axis];
+          p[u] = a;
+          p[v] = b;
+          out.push_back({p, normal});
+        }
+    }
+  }
+  return out;
+}
+
+std::vector<SurfacePoint> cylinder_samples(const Cylinder& c, double spacing) {
+  std::vector<SurfacePoint> out;
+  for (const double phi : angles(c.radius, spacing)) {
+    const Vec3 radial(std::cos(phi), std::sin(phi), 0.0);
+    for (const double z : steps(c.z0, c.z1, spacing))
+      out.push_back({c.radius * radial + Vec3(0, 0, z), radial});
+  }
+  for (const double rho : steps(0.0, c.radius, spacing))
+    for (const double phi : angles(rho, spacing, 1))
+      for (const double z : {c.z0, c.z1})
+        out.push_back({Vec3(rho * std::cos(phi), rho * std::sin(phi), z),
+                       Vec3(0, 0, z == c.z0 ? -1.0 : 1.0)});
+  return out;
+}
+
+std::vector<SurfacePoint> torus_samples(const Torus& t, double spacing) {
+  std::vector<SurfacePoint> out;
+  for (const double u : angles(t.major + t.minor, spacing))
+    for (const double v : angles(t.minor, spacing)) {
+      const Vec3 normal(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
+      out.push_back({Vec3(t.major * std::cos(u), t.major * std::sin(u), 0.0) + t.minor * normal,
+                     normal});
+    }
+  return out;
+}
+
+std::vector<SurfacePoint> ellipsoid_samples(const Ellipsoid& e, double spacing) {
+  // The map from the unit sphere stretches distances by at most the largest semi-axis.
+  const double stretch = e.semi_axes.maxCoeff();
+  std::vector<SurfacePoint> out;
+  for (const Vec3& s : fibonacci_sphere(4.0 * kPi * stretch * stretch / (spacing * spacing))) {
+    const Vec3 p = e.semi_axes.cwiseProduct(s);
+    out.push_back({p, s.cwiseQuotient(e.semi_axes).normalized()});
+  }
+  return out;
+}
+
+// Eberly, "Distance from a point to an ellipse, an ellipsoid, or a hyperellipsoid": the
+// closest point's Lagrange parameter s solves sum (r_i z_i / (s + r_i))^2 = 1, a function
+// monotone on the bracket used, found by bisection down to the last bit. Semi-axes sorted
+// e0 >= e1 (>= e2), the point in the first octant.
+double bisect(const double* r, const double* z, int n, double g) {
+  double lo = z[n - 1] - 1.0, hi = 0.0;
+  if (g >= 0.0) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += (r[i] * z[i]) * (r[i] * z[i]);
+    hi = std::sqrt(sum) - 1.0;
+  }
+  double s = 0.0;
+  for (int iteration = 0; iteration < 2000; ++iteration) {
+    s = 0.5 * (lo + hi);
+    if (s == lo || s == hi) break;
+    double value = -1.0;
+    for (int i = 0; i < n; ++i) value += (r[i] * z[i] / (s + r[i])) * (r[i] * z[i] / (s + r[i]));
+    if (value > 0.0)
+      lo = s;
+    else if (value < 0.0)
+      hi = s;
+    else
+      break;
+  }
+  return s;
+}
+
+double ellipse_distance(double e0, double e1, double y0, double y1) {
+  if (y1 > 0.0) {
+    if (y0 > 0.0) {
+      const double z[2] = {y0 / e0, y1 / e1};
+      const double g = z[0] * z[0] + z[1] * z[1] - 1.0;
+      if (g == 0.0) return 0.0;
+      const double r[2] = {(e0 / e1) * (e0 / e1), 1.0};
+      const double s = bisect(r, z, 2, g);
+      return std::hypot(r[0] * y0 / (s + r[0]) - y0, y1 / (s + 1.0) - y1);
+    }
+    return std::abs(y1 - e1);
+  }
+  const double numerator = e0 * y0, denominator = e0 * e0 - e1 * e1;
+  if (numerator < denominator) {
+    const double x = numerator / denominator;
+    return std::hypot(e0 * x - y0, e1 * std::sqrt(1.0 - x * x));
+  }
+  return std::abs(y0 - e0);
+}
+
+double sorted_ellipsoid_distance(const double e[3], const double y[3]) {
+  if (y[2] > 0.0) {
+    if (y[1] > 0.0) {
+      if (y[0] > 0.0) {
+        const double z[3] = {y[0] / e[0], y[1] / e[1], y[2] / e[2]};
+        const double g = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] - 1.0;
+        if (g == 0.0) return 0.0;
+        const double r[3] = {(e[0] / e[2]) * (e[0] / e[2]), (e[1] / e[2]) * (e[1] / e[2]), 1.0};
+        const double s = bisect(r, z, 3, g);
+        Vec3 d;
+        for (int i = 0; i < 3; ++i) d[i] = r[i] * y[i] / (s + r[i]) - y[i];
+        return d.norm();
+      }
+      return ellipse_distance(e[1], e[2], y[1], y[2]);
+    }
+    if (y[0] > 0.0) return ellipse_distance(e[0], e[2], y[0], y[2]);
+    return std::abs(y[2] - e[2]);
+  }
+  // On the plane of the two largest axes: the closest point may leave it (inside, near the
+  // medial disc), else it is the ellipse's.
+  const double d0 = e[0] * e[0] - e[2] * e[2], d1 = e[1] * e[1] - e[2] * e[2];
+  const double ey0 = e[0] * y[0], ey1 = e[1] * y[1];
+  if (ey0 < d0 && ey1 < d1) {
+    const double x0 = ey0 / d0, x1 = ey1 / d1;
+    const double discriminant = 1.0 - x0 * x0 - x1 * x1;
+    if (discriminant > 0.0)
+      return Vec3(e[0] * x0 - y[0], e[1] * x1 - y[1], e[2] * std::sqrt(discriminant)).norm();
+  }
+  return ellipse_distance(e[0], e[1], y[0], y[1]);
+}
+
+}  // namespace
+
+double ellipsoid_distance(const Vec3& semi_axes, const Vec3& y) {
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int a, int b) { return semi_axes[a] > semi_axes[b]; });
+  double e[3], q[3];
+  for (int i = 0; i < 3; ++i) {
+    e[i] = semi_axes[order[i]];
+    q[i] = std::abs(y[order[i]]);
+  }
+  return sorted_ellipsoid_distance(e, q);
+}
+
+double surface_distance(const Primitive& primitive, const Vec3& p) {
+  const Vec3 q = to_local(primitive, p);
+  return std::visit(
+      Overloaded{
+          [&](const Sphere& s) { return std::abs(q.norm() - s.radius); },
+          [&](const Box& b) { return box_distance(b, q); },
+          [&](const Cylinder& c) { return cylinder_distance(c, q); },
+          [&](const Torus& t) {
+            return std::abs(std::hypot(std::hypot(q.x(), q.y()) - t.major, q.z()) - t.minor);
+          },
+          [&](const Ellipsoid& e) { return ellipsoid_distance(e.semi_axes, q); },
+          [&](const HalfSpace& h) { return std::abs(q.z() - h.offset); },
+      },
+      primitive.shape);
+}
+
+double feature_distance(const Primitive& primitive, const Vec3& p) {
+  const Vec3 q = to_local(primitive, p);
+  return std::visit(Overloaded{
+                        [&](const Box& b) { return box_edges_distance(b, q); },
+                        [&](const Cylinder& c) {
+                          const double rho = std::hypot(q.x(), q.y()) - c.radius;
+                          return std::min(std::hypot(rho, q.z() - c.z0),
+                                          std::hypot(rho, q.z() - c.z1));
+                        },
+                        [&](const auto&) { return kInfinity; },
+                    },
+                    primitive.shape);
+}
+
+std::vector<SurfacePoint> sample_surface(const Primitive& primitive, double spacing) {
+  std::vector<SurfacePoint> local = std::visit(
+      Overloaded{
+          [&](const Sphere& s) {
+            std::vector<SurfacePoint> out;
+            for (const Vec3& n : fibonacci_sphere(4.0 * kPi * s.radius * s.radius /
+                                                  (spacing * spacing)))
+              out.push_back({s.radius * n, n});
+            return out;
+          },
+          [&](const Box& b) { return box_samples(b, spacing); },
+          [&](const Cylinder& c) { return cylinder_samples(c, spacing); },
+          [&](const Torus& t) { return torus_samples(t, spacing); },
+          [&](const Ellipsoid& e) { return ellipsoid_samples(e, spacing); },
+          [&](const HalfSpace&) { return std::vector<SurfacePoint>{}; },
+      },
+      primitive.shape);
+  for (SurfacePoint& s : local) {
+    s.point = primitive.frame.rotation * s.point + primitive.frame.translation;
+    s.normal = primitive.frame.rotation * s.normal;
+  }
+  return local;
+}
+
+double solid_volume(const Primitive& primitive) {
+  return std::visit(
+      Overloaded{
+          [](const Sphere& s) { return 4.0 / 3.0 * kPi * std::pow(s.radius, 3); },
+          [](const Box& b) { return (b.hi - b.lo).prod(); },
+          [](const Cylinder& c) { return kPi * c.radius * c.radius * (c.z1 - c.z0); },
+          [](const Torus& t) { return 2.0 * kPi * kPi * t.major * t.minor * t.minor; },
+          [](const Ellipsoid& e) { return 4.0 / 3.0 * kPi * e.semi_axes.prod(); },
+          [](const HalfSpace&) { return kInfinity; },
+      },
+      primitive.shape);
+}
+
+}  // namespace volmesh::geometry

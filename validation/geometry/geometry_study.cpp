@@ -1,0 +1,188 @@
+// Geometric convergence of one mesher on one domain (issue 4, DESIGN.md §5): per level, the
+// mesh's region volumes against the exact ones and, for analytic domains, the two-sided
+// Hausdorff distance between its boundaries/interfaces and the true surfaces, overall and
+// within a band around the sharp edges. One JSON object per level on stdout.
+//   geometry_study DOMAIN --method cutcell|midpoint|staircase --levels A..B
+//                  [--spacing F] [--feature-band K] [--margin M] [--clearance C]
+// DOMAIN: builtin:NAME or a domain file (.json). Samples are h/F apart (default F = 6); the
+// feature band is K h (default 2); M is the octree's margin around the bounding box (0 puts a
+// box-shaped domain's faces on the octree grid); C is CutcellOptions::vertex_clearance (0 moves
+// no grid vertex off the interfaces). Exact volumes: builtin_region_volumes for built-in domains,
+// the solid's own volume for a file holding one analytic primitive.
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "geometric_error.hpp"
+#include "volmesh/cutcell/cutcell.hpp"
+#include "volmesh/domain/builtin.hpp"
+#include "volmesh/domain/domain_file.hpp"
+#include "volmesh/octree/staircase.hpp"
+
+namespace {
+
+using namespace volmesh;
+using Clock = std::chrono::steady_clock;
+
+struct Arguments {
+  std::string domain, method;
+  int first = 0, last = 0;
+  double spacing = 6.0, band = 2.0;
+  double margin = OctreeOptions{}.margin;
+  double clearance = CutcellOptions{}.vertex_clearance;
+};
+
+constexpr const char* kUsage =
+    "usage: geometry_study DOMAIN --method cutcell|midpoint|staircase --levels A..B "
+    "[--spacing F] [--feature-band K] [--margin M] [--clearance C]";
+
+bool parse(int argc, char** argv, Arguments& a) {
+  if (argc < 2) return false;
+  a.domain = argv[1];
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--method") {
+      a.method = value;
+    } else if (key == "--levels") {
+      if (std::sscanf(value.c_str(), "%d..%d", &a.first, &a.last) != 2) return false;
+    } else if (key == "--spacing") {
+      a.spacing = std::stod(value);
+    } else if (key == "--feature-band") {
+      a.band = std::stod(value);
+    } else if (key == "--margin") {
+      a.margin = std::stod(value);
+    } else if (key == "--clearance") {
+      a.clearance = std::stod(value);
+    } else {
+      return false;
+    }
+  }
+  return argc % 2 == 0 && (a.method == "cutcell" || a.method == "midpoint" ||
+                           a.method == "staircase") &&
+         a.first >= 1 && a.last >= a.first && a.spacing > 0.0 && a.band >= 0.0 && a.margin >= 0.0 &&
+         a.clearance >= 0.0;
+}
+
+std::unique_ptr<Domain> load(const std::string& name) {
+  const std::string prefix = "builtin:";
+  if (name.starts_with(prefix)) return make_builtin_domain(name.substr(prefix.size()));
+  return read_domain_file(name);
+}
+
+std::map<Index, double> exact_volumes(const std::string& name, const Domain& domain) {
+  const std::string prefix = "builtin:";
+  if (name.starts_with(prefix)) return builtin_region_volumes(name.substr(prefix.size()));
+  const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain);
+  if (analytic && analytic->primitives().size() == 1 && domain.regions().size() == 1)
+    return {{domain.regions()[0], geometry::solid_volume(analytic->primitives()[0])}};
+  return {};
+}
+
+// The octree's cell edge at `level` (OctreeOptions: the root is the bounding box's largest
+// side grown by the margin on both sides).
+double cell_size(const Domain& domain, const OctreeOptions& octree, int level) {
+  const Box3 b = domain.bounds();
+  return b.size().maxCoeff() * (1.0 + 2.0 * octree.margin) / std::ldexp(1.0, level);
+}
+
+nlohmann::json one_sided(const geometry::OneSided& s) {
+  return {{"mesh_to_surface", s.mesh_to_surface},
+          {"surface_to_mesh", s.surface_to_mesh},
+          {"hausdorff", s.hausdorff()},
+          {"mesh_samples", s.mesh_samples},
+          {"surface_samples", s.surface_samples},
+          {"mesh_worst", {s.mesh_worst.x(), s.mesh_worst.y(), s.mesh_worst.z()}},
+          {"surface_worst", {s.surface_worst.x(), s.surface_worst.y(), s.surface_worst.z()}}};
+}
+
+nlohmann::json run_level(const Arguments& a, const Domain& domain,
+                         const std::map<Index, double>& exact, int level) {
+  OctreeOptions octree;
+  octree.level = level;
+  octree.margin = a.margin;
+  const auto start = Clock::now();
+  PolyMesh mesh;
+  Index cut_cells = 0;
+  if (a.method == "staircase") {
+    mesh = staircase_mesh(domain, StaircaseOptions{octree, {}});
+  } else {
+    CutcellOptions options;
+    options.octree = octree;
+    options.vertex_clearance = a.clearance;
+    options.interface_points =
+        a.method == "midpoint" ? InterfacePoints::midpoint : InterfacePoints::exact;
+    CutcellStats stats;
+    mesh = cutcell_mesh(domain, options, &stats);
+    cut_cells = stats.cut_cells;
+  }
+  const double mesh_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double h = cell_size(domain, octree, level);
+
+  nlohmann::json row = {{"domain", a.domain}, {"method", a.method}, {"level", level},
+                        {"h", h},             {"cells", mesh.num_cells()},
+                        {"cut_cells", cut_cells}, {"mesh_seconds", mesh_seconds}};
+  const std::map<Index, double> volumes = geometry::region_volumes(mesh);
+  double total = 0.0, exact_total = 0.0, max_region_error = 0.0;
+  nlohmann::json regions = nlohmann::json::object();
+  for (const auto& [label, volume] : volumes) total += volume;
+  for (const auto& [label, volume] : exact) {
+    const auto found = volumes.find(label);
+    const double error = (found == volumes.end() ? 0.0 : found->second) - volume;
+    regions[std::to_string(label)] = {{"exact", volume}, {"error", error}};
+    exact_total += volume;
+    max_region_error = std::max(max_region_error, std::abs(error));
+  }
+  row["volume"] = total;
+  row["regions"] = regions;
+  if (!exact.empty()) {
+    row["exact_volume"] = exact_total;
+    row["volume_error"] = std::abs(total - exact_total);
+    row["max_region_error"] = max_region_error;
+  }
+
+  if (const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain)) {
+    const auto measured = Clock::now();
+    const geometry::HausdorffReport report =
+        geometry::hausdorff(mesh, *analytic, {h / a.spacing, a.band * h});
+    row["hausdorff"] = one_sided(report.all);
+    nlohmann::json features = nlohmann::json::object();
+    for (std::size_t i = 0; i < report.features.size(); ++i)
+      if (report.features[i].surface_samples > 0)
+        features[analytic->primitives()[i].name] = one_sided(report.features[i]);
+    row["features"] = features;
+    row["measure_seconds"] = std::chrono::duration<double>(Clock::now() - measured).count();
+  }
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Arguments a;
+  bool usable = false;
+  try {
+    usable = parse(argc, argv, a);
+  } catch (const std::exception&) {  // a number that is not one
+  }
+  if (!usable) {
+    std::cerr << kUsage << "\n";
+    return 2;
+  }
+  try {
+    const std::unique_ptr<Domain> domain = load(a.domain);
+    const std::map<Index, double> exact = exact_volumes(a.domain, *domain);
+    for (int level = a.first; level <= a.last; ++level)
+      std::cout << run_level(a, *domain, exact, level).dump() << std::endl;
+  } catch (const std::exception& e) {
+    // Domain errors name the domain already; the mesher's (e.g. the level) do not.
+    const std::string what = e.what();
+    std::cerr << (what.starts_with(a.domain) ? what : a.domain + ": " + what) << "\n";
+    return 1;
+  }
+  return 0;
+}
