@@ -37,6 +37,7 @@ struct MeshOptions {
   std::string method, domain, output;
   std::string interface_points = "exact";
   int level = 5;
+  int base_level = OctreeOptions{}.base_level;
   bool tets = false, json = false;
   int threads = 0;
 };
@@ -78,10 +79,17 @@ MethodResult mesh_grid(const Domain& domain, const MeshOptions& opt) {
   return r;
 }
 
+OctreeOptions octree_options(const MeshOptions& opt) {
+  OctreeOptions o;
+  o.level = opt.level;
+  o.base_level = opt.base_level;
+  return o;
+}
+
 MethodResult mesh_staircase(const Domain& domain, const MeshOptions& opt) {
   const StageLog log("staircase");
   StaircaseOptions options;
-  options.octree.level = opt.level;
+  options.octree = octree_options(opt);
   options.progress = [&log](const std::string& stage, double) { log(stage); };
   StaircaseStats stats;
   MethodResult r;
@@ -95,7 +103,7 @@ MethodResult mesh_staircase(const Domain& domain, const MeshOptions& opt) {
 MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
   const StageLog log("cutcell");
   CutcellOptions options;
-  options.octree.level = opt.level;
+  options.octree = octree_options(opt);
   options.interface_points =
       opt.interface_points == "midpoint" ? InterfacePoints::midpoint : InterfacePoints::exact;
   options.progress = [&log](const std::string& stage, double) { log(stage); };
@@ -110,6 +118,10 @@ MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
                {"feature_points", stats.feature_points},
                {"min_cell_volume_ratio", stats.min_cell_volume_ratio},
                {"max_skewness", stats.max_skewness},
+               {"max_non_orthogonality", stats.max_non_orthogonality},
+               {"merged_cells", stats.merged_cells},
+               {"joined_faces", stats.joined_faces},
+               {"bad_faces", stats.bad_faces},
                {"octree_seconds", stats.octree_seconds},
                {"cut_seconds", stats.cut_seconds}};
   return r;
@@ -176,6 +188,7 @@ int run_mesh(const MeshOptions& opt) {
                      {"domain", domain_display_name(opt.domain)},
                      {"output", opt.output},
                      {"level", opt.level},
+                     {"base_level", opt.base_level},
                      {"time_seconds", mesh_seconds},
                      {"total_seconds", seconds_since(start)},
                      {"cells", mesh.num_cells()},
@@ -213,6 +226,10 @@ Command add_mesh_command(CLI::App& root) {
   app->add_option("--level", opt->level,
                   "octree depth at boundaries and interfaces (grid: 2^level cells per axis)")
       ->capture_default_str();
+  app->add_option("--base-level", opt->base_level,
+                  "octree: uniform depth everywhere before refining toward the interfaces")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   app->add_flag("--tets", opt->tets, "grid: split each hex into 6 Kuhn tetrahedra");
   app->add_option("--interface-points", opt->interface_points,
                   "cutcell: exact crossings (default) or edge midpoints (M3C as published)")

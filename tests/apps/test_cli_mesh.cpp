@@ -1,8 +1,10 @@
 // volmesh mesh end to end: outputs re-read by the readers, --json fields, determinism,
-// OpenFOAM's checkMesh on a staircase case, and the refusals (exit 1 or 2, no output).
+// OpenFOAM's checkMesh on staircase and cut-cell cases, and the refusals (exit 1 or 2, no
+// output).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -37,6 +39,27 @@ TEST(CliMesh, StaircaseWritesAValidMeshAndReportsJson) {
   EXPECT_NEAR(j["regions"]["1"]["volume"].get<double>(), 4.0 * std::numbers::pi / 3.0, 0.1);
 }
 
+TEST(CliMesh, BaseLevelAtTheLevelIsAUniformGrid) {
+  const fs::path dir = test::scratch_dir("mesh-base-level");
+  const auto r = run_volmesh(
+      "mesh staircase builtin:ball --level 4 --base-level 4 --json -o " + (dir / "b.vtu").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["base_level"], 4);
+  // The root: the ball's box grown by the 5% margin on each side; 16 cells per axis, kept
+  // by their centre.
+  const double h = 2.2 / 16;
+  int inside = 0;
+  for (int i = 0; i < 16; ++i)
+    for (int k = 0; k < 16; ++k)
+      for (int l = 0; l < 16; ++l) {
+        const double x = -1.1 + (i + 0.5) * h, y = -1.1 + (k + 0.5) * h, z = -1.1 + (l + 0.5) * h;
+        inside += x * x + y * y + z * z <= 1.0;
+      }
+  EXPECT_EQ(j["cells"], inside);
+  EXPECT_EQ(j["leaves"], 16 * 16 * 16);
+}
+
 TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   const fs::path dir = test::scratch_dir("mesh-threads");
   for (const char* t : {"1", "2"}) {
@@ -68,21 +91,43 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
   EXPECT_NEAR(check_validity(tets).total_volume, 1.0, 1e-12);
 }
 
-TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
-  const fs::path dir = test::scratch_dir("mesh-foam");
-  const fs::path out = dir / "ball.foam";
-  const auto r = run_volmesh("mesh staircase builtin:ball --level 4 -o " + out.string() + "/", dir);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
-  if (std::system("command -v checkMesh >/dev/null 2>&1") != 0)
-    GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam (Debian package)";
+// Meshes into an OpenFOAM case and returns checkMesh's report ("" when checkMesh is missing).
+std::string check_mesh_report(const std::string& mesh_args, const std::string& name) {
+  const fs::path dir = test::scratch_dir("mesh-foam-" + name);
+  const fs::path out = dir / (name + ".foam");
+  const auto r = run_volmesh("mesh " + mesh_args + " -o " + out.string() + "/", dir);
+  EXPECT_EQ(r.exit_code, 0) << mesh_args << ": " << r.err;
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid()) << mesh_args;
+  if (std::system("command -v checkMesh >/dev/null 2>&1") != 0) return "";
   const fs::path log = dir / "checkMesh.log";
   std::system(("cd '" + dir.string() +
                "' && WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\" checkMesh -case '" +
                out.string() + "' >'" + log.string() + "' 2>&1")
                   .c_str());
-  const std::string report = test::slurp(log);
+  return test::slurp(log);
+}
+
+TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
+  const std::string report = check_mesh_report("staircase builtin:ball --level 4", "staircase");
+  if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
   EXPECT_NE(report.find("Mesh OK."), std::string::npos) << report;
+}
+
+// A ball and two real surfaces from libcgal-demo. builtin:primitives and fandisk still fail
+// checkMesh on a few faces where three interfaces meet near a grid plane or next to sharp
+// edges (issue 4 is open on them); their face counts are bounded in test_cutcell_quality.
+TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
+  const std::string meshes = std::string(VOLMESH_CGAL_DATA) + "/meshes/";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"cutcell builtin:ball --level 5", "ball"},
+      {"cutcell " + meshes + "elephant.off --level 5", "elephant"},
+      {"cutcell " + meshes + "knot1.off --level 5", "knot1"},
+  };
+  for (const auto& [args, name] : cases) {
+    const std::string report = check_mesh_report(args, name);
+    if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
+    EXPECT_NE(report.find("Mesh OK."), std::string::npos) << args << "\n" << report;
+  }
 }
 
 TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
@@ -93,7 +138,13 @@ TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
       {"mesh staircase builtin:nosuch --level 3", "nosuch"},
       {"mesh staircase " + (dir / "missing.stl").string() + " --level 3", "missing.stl"},
       {"mesh grid builtin:box --level 11", "index limit"},
+      {"mesh cutcell builtin:ball --level 0", "smaller than one cell"},
+      {"mesh cutcell builtin:ball --level 21", "--level 21 exceeds the maximum 20"},
+      {"mesh cutcell " + (dir / "open.off").string() + " --level 3", "has a hole"},
   };
+  // A tetrahedron with one face missing: an open surface.
+  std::ofstream(dir / "open.off") << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                     "3 0 2 1\n3 0 1 3\n3 0 3 2\n";
   for (const auto& [args, message] : cases) {
     const auto r = run_volmesh(args + " -o " + out.string(), dir);
     EXPECT_EQ(r.exit_code, 1) << args;
@@ -113,7 +164,8 @@ TEST(CliMesh, BadUsageExitsWith2) {
        {"mesh", "mesh nosuch builtin:ball -o x.vtu", "mesh staircase builtin:ball",
         "mesh staircase builtin:ball -o x.vtu --level abc",
         "mesh staircase builtin:ball -o x.vtu --tets",
-        "mesh staircase builtin:ball -o x.vtu --threads 0"}) {
+        "mesh staircase builtin:ball -o x.vtu --threads 0",
+        "mesh staircase builtin:ball -o x.vtu --base-level -1"}) {
     const auto r = run_volmesh(args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }

@@ -5,7 +5,8 @@
 # Background: blockMesh box around the surface's SDF grid (5% margin), cubic cells; castellation with
 # refinementSurfaces level (L L), implicit feature snapping, no layers. The point kept inside
 # (locationInMesh) is the deepest voxel of the surface's own signed distance field.
-# Prints one line: cells seconds (snappyHexMesh wall time), and leaves the case for checkMesh.
+# Prints one line: cells, snappyHexMesh wall seconds, its CPU seconds (user + system); leaves the
+# case for checkMesh.
 set -euo pipefail
 volmesh=$1 surface=$2 level=$3 cells=$4 case=$5
 name=$(basename "${surface%.*}")
@@ -84,9 +85,9 @@ meshQualityControls { #include "meshQualityDict" }
 EOF
 
 (cd "$case" && blockMesh -case . > log.blockMesh 2>&1)
-start=$(date +%s.%N)
-(cd "$case" && snappyHexMesh -case . -overwrite > log.snappyHexMesh 2>&1)
-end=$(date +%s.%N)
+(cd "$case" && /usr/bin/time -f "%e %U %S" -o time.snappyHexMesh \
+  snappyHexMesh -case . -overwrite > log.snappyHexMesh 2>&1)
 touch "$case/$(basename "$case").foam"
 cells=$(grep -m1 -oP "nCells:\s*\K[0-9]+" "$case/constant/polyMesh/owner")
-echo "$cells $(/usr/bin/python3 -c "print(round($end - $start, 2))")"
+read -r wall user system < "$case/time.snappyHexMesh"
+echo "$cells $wall $(/usr/bin/python3 -c "print(round($user + $system, 2))")"
