@@ -88,17 +88,25 @@ int run_solve(const SolveOptions& opt) {
   std::optional<fem::ErrorNorms> errors;
   MeshFields fields;
   std::string warning;
-  if (elasticity) {
-    const fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
-    const fem::VectorSolution s = solve_vector(in.mesh, problem, space);
-    dofs = s.dofs, report = s.solve, errors = s.errors;
-    fields = vector_fields(in.mesh, s, problem);
-  } else {
-    const fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
-    if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
-    const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space);
-    dofs = s.dofs, report = s.solve, errors = s.errors;
-    fields = scalar_fields(in.mesh, s, problem);
+  // What the problem finds wrong with a mesh file (a region without material data, a
+  // boundary tag without a condition, a cell the space refuses) names the file.
+  try {
+    if (elasticity) {
+      const fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+      const fem::VectorSolution s = solve_vector(in.mesh, problem, space);
+      dofs = s.dofs, report = s.solve, errors = s.errors;
+      fields = vector_fields(in.mesh, s, problem);
+    } else {
+      const fem::PoissonProblem problem =
+          poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+      if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space);
+      dofs = s.dofs, report = s.solve, errors = s.errors;
+      fields = scalar_fields(in.mesh, s, problem);
+    }
+  } catch (const InputError& e) {
+    if (opt.mesh.empty()) throw;
+    throw InputError(opt.mesh + ": " + e.what());
   }
   const Clock::time_point writing = Clock::now();
   write_mesh(in.mesh, opt.output, fields);

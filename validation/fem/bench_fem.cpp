@@ -6,7 +6,11 @@
 //   bench_fem poly-grid N    N³ hexes, polyhedral space
 //   bench_fem poly-octree N  octree checkerboard: N³ cubes, every other one split into 8
 //                            (hanging faces on all sides of the others), polyhedral space
+//   bench_fem cutcell L      cut-cell octree of builtin:ball, uniform depth L, polyhedral
 //   bench_fem mesh FILE SPACE   any mesh volmesh reads (e.g. a cut-cell .vtu)
+// Options after the case: --solver direct|cg (default: automatic, direct up to
+// direct_limit unknowns), --elasticity (a linear displacement field, E = 1, ν = 0.3,
+// instead of Poisson: three unknowns per node).
 #include <tbb/task_arena.h>
 
 #include <chrono>
@@ -18,6 +22,8 @@
 
 #include "fem_test_meshes.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/cutcell/cutcell.hpp"
+#include "volmesh/domain/builtin.hpp"
 #include "volmesh/fem/fem.hpp"
 #include "volmesh/io/mesh_io.hpp"
 
@@ -38,9 +44,26 @@ fem::PoissonProblem sine_problem(const PolyMesh& mesh) {
   return p;
 }
 
+// u = (0.1, -0.2, 0.05) + A x with a non-symmetric A: no body force, displacement data on
+// every boundary tag.
+fem::ElasticityProblem linear_elasticity(const PolyMesh& mesh) {
+  Eigen::Matrix3d a;
+  a << 0.2, -0.1, 0.3, 0.1, 0.4, -0.2, -0.3, 0.1, 0.2;
+  const fem::VectorFunction u = [a](const Vec3& x) -> Vec3 {
+    return Vec3(0.1, -0.2, 0.05) + a * x;
+  };
+  fem::ElasticityProblem p;
+  for (Index r : regions_of(mesh)) p.material[r] = fem::IsotropicMaterial{};
+  p.exact = u;
+  for (const std::string& tag : mesh.tag_names)
+    p.boundary[tag] = {fem::VectorBoundaryCondition::Kind::displacement, u};
+  return p;
+}
+
 int run(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: bench_fem p1|q1|poly-grid|poly-octree N | bench_fem mesh FILE SPACE\n";
+    std::cerr << "usage: bench_fem p1|q1|poly-grid|poly-octree|cutcell N [--solver direct|cg] "
+                 "[--elasticity] | bench_fem mesh FILE SPACE [...]\n";
     return 2;
   }
   const std::string kind = argv[1];
@@ -68,6 +91,11 @@ int run(int argc, char** argv) {
     } else if (kind == "poly-grid") {
       mesh = test::hex_cube(n);
       label = "hexes " + std::to_string(n) + "³";
+    } else if (kind == "cutcell") {
+      CutcellOptions options;
+      options.octree.level = options.octree.base_level = static_cast<int>(n);
+      mesh = cutcell_mesh(*make_builtin_domain("ball"), options);
+      label = "cut-cell ball, level " + std::to_string(n);
     } else if (kind == "poly-octree") {
       mesh = test::octree_checkerboard(n);
       label = "octree checkerboard " + std::to_string(n) + "³";
@@ -76,17 +104,43 @@ int run(int argc, char** argv) {
       return 2;
     }
   }
+  fem::LinearSolverOptions solver;
+  bool elasticity = false;
+  for (int i = kind == "mesh" ? 4 : 3; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--elasticity") {
+      elasticity = true;
+    } else if (arg == "--solver" && i + 1 < argc && std::string(argv[i + 1]) == "direct") {
+      solver.kind = fem::LinearSolverOptions::Kind::direct, ++i;
+    } else if (arg == "--solver" && i + 1 < argc && std::string(argv[i + 1]) == "cg") {
+      solver.kind = fem::LinearSolverOptions::Kind::cg, ++i;
+    } else {
+      std::cerr << "bench_fem: unknown option '" << arg << "'\n";
+      return 2;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  const fem::ScalarSolution s = fem::solve_poisson(mesh, sine_problem(mesh), space);
+  Index dofs = 0;
+  fem::LinearSolveReport report;
+  double l2 = 0.0;
+  if (elasticity) {
+    const fem::VectorSolution s =
+        fem::solve_elasticity(mesh, linear_elasticity(mesh), space, solver);
+    dofs = s.dofs, report = s.solve, l2 = s.errors->l2;
+    label += ", elasticity";
+  } else {
+    const fem::ScalarSolution s = fem::solve_poisson(mesh, sine_problem(mesh), space, solver);
+    dofs = s.dofs, report = s.solve, l2 = s.errors->l2;
+  }
   const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("| %s | %s | %d | %d | %.2f | %.3g | %.2f | %s | %d | %.1e | %.2f | %.2f | %.3e |\n",
-              label.c_str(), fem::space_name(space), mesh.num_cells(), s.dofs,
-              s.solve.assembly_seconds, mesh.num_cells() / s.solve.assembly_seconds,
-              s.solve.solve_seconds, s.solve.method.c_str(), s.solve.iterations, s.solve.residual,
-              total, cpu, s.errors->l2);
+  std::printf("| %s | %s | %d | %d | %d | %.2f | %.3g | %.2f | %s | %d | %.1e | %.2f | %.2f | %.3e |\n",
+              label.c_str(), fem::space_name(space), mesh.num_cells(), dofs, report.unknowns,
+              report.assembly_seconds, mesh.num_cells() / report.assembly_seconds,
+              report.solve_seconds, report.method.c_str(), report.iterations, report.residual,
+              total, cpu, l2);
   return 0;
 }
 

@@ -14,6 +14,11 @@
 
 namespace volmesh::fem {
 
+// Thread safety: the solvers evaluate sources, body forces and exact solutions from several
+// threads at once (the cell loops run in parallel on TBB), so every function given here must
+// be safe to call concurrently. The named problems are pure functions of the point; user
+// expressions (expression.hpp) are, because each thread evaluates its own muparser parser (a
+// mu::Parser is not: it writes its variables and stack on every Eval).
 using ScalarFunction = std::function<double(const Vec3&)>;
 using VectorFunction = std::function<Vec3(const Vec3&)>;
 using TensorFunction = std::function<Eigen::Matrix3d(const Vec3&)>;

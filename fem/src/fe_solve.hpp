@@ -1,0 +1,191 @@
+#pragma once
+// The steps Poisson and elasticity share around their local systems: conditions split into
+// essential and natural ones, the global system with the natural loads, the essential values
+// at the nodes (taken on the true boundary), the constrained solve, and u_h at a cell's
+// quadrature points afterwards. C is the number of unknowns per node (1 or 3), node-major.
+#include <Eigen/Core>
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fe_assembly.hpp"
+#include "fe_shared.hpp"
+#include "volmesh/fem/linear_solver.hpp"
+
+namespace volmesh::fem::detail {
+
+template <int C>
+using NodeVector = Eigen::Matrix<double, C, 1>;
+
+// A condition's value as C numbers.
+inline NodeVector<1> as_node_vector(double v) { return NodeVector<1>(v); }
+inline NodeVector<3> as_node_vector(const Vec3& v) { return v; }
+
+// Calls fn(p, nodes, node_count) for every quadrature point p of a cell, `nodes` being the
+// local nodes whose shape functions its group involves.
+template <class Fn>
+void for_each_point(const CellPoints& q, Fn&& fn) {
+  for (const auto& g : q.groups)
+    for (int p = g.point_begin; p < g.point_begin + g.point_count; ++p)
+      fn(p, q.nodes.data() + g.node_begin, g.node_count);
+}
+
+// The condition of every boundary tag, and which tags carry an essential one.
+template <class Condition>
+struct TagConditions {
+  std::vector<const Condition*> of_tag;
+  std::vector<char> essential, natural;
+};
+
+// Which kind of condition fixes the unknowns, and what is wrong when no boundary face has one.
+template <class Condition>
+struct Essential;
+template <>
+struct Essential<ScalarBoundaryCondition> {
+  static constexpr auto kind = ScalarBoundaryCondition::Kind::dirichlet;
+  static constexpr const char* missing =
+      "no Dirichlet boundary condition on any boundary face: the solution is determined only "
+      "up to a constant";
+};
+template <>
+struct Essential<VectorBoundaryCondition> {
+  static constexpr auto kind = VectorBoundaryCondition::Kind::displacement;
+  static constexpr const char* missing =
+      "no displacement boundary condition on any boundary face: the displacement is "
+      "determined only up to a rigid motion";
+};
+
+// Throws InputError (Essential::missing) when no boundary face carries an essential
+// condition.
+template <class Condition>
+TagConditions<Condition> split_conditions(const PolyMesh& mesh,
+                                          const std::map<std::string, Condition>& by_name) {
+  TagConditions<Condition> out;
+  out.of_tag = conditions_per_tag(mesh, by_name);
+  out.essential.assign(out.of_tag.size(), 0);
+  out.natural.assign(out.of_tag.size(), 0);
+  for (std::size_t t = 0; t < out.of_tag.size(); ++t)
+    if (out.of_tag[t]) {
+      out.essential[t] = out.of_tag[t]->kind == Essential<Condition>::kind;
+      out.natural[t] = !out.essential[t];
+    }
+  if (std::find(out.essential.begin(), out.essential.end(), 1) == out.essential.end())
+    throw InputError(Essential<Condition>::missing);
+  return out;
+}
+
+// Starts cell c's local system: k and f zeroed for C unknowns per node (outer then
+// internal nodes), the stiffness rule's points in work.stiffness, which it returns.
+inline const CellPoints& begin_local(const FeSpace& space, Index c, int components,
+                                     LocalWork& work) {
+  const Eigen::Index n =
+      components *
+      (static_cast<Eigen::Index>(space.cell_nodes(c).size()) + space.internal_nodes());
+  work.k.setZero(n, n);
+  work.f.setZero(n);
+  space.cell_points(c, Rule::stiffness, work.stiffness);
+  return work.stiffness;
+}
+
+// A solved field: its space, the cells' local systems (which recover the condensed internal
+// unknowns) and the nodal unknowns.
+struct SolvedField {
+  std::unique_ptr<FeSpace> space;
+  LocalSystem local;
+  Eigen::VectorXd u;
+};
+
+// Builds the space, assembles the local systems local(space, c, work) and the natural loads,
+// fixes the nodes on essential tags (the lowest such tag of a node wins; values taken on
+// the true boundary), solves. report.assembly_seconds counts from `start`. Throws as
+// split_conditions does.
+template <int C, class Condition, class Local>
+SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
+                        const std::map<std::string, Condition>& boundary,
+                        const PointMap& to_true_boundary, const Local& local,
+                        const LinearSolverOptions& options,
+                        std::chrono::steady_clock::time_point start, LinearSolveReport& report) {
+  const TagConditions<Condition> conditions =
+      split_conditions(mesh, boundary);
+  SolvedField out;
+  out.space = make_space(mesh, space_kind);
+  const FeSpace& space = *out.space;
+  out.local = [&space, local](Index c, LocalWork& work) { local(space, c, work); };
+  GlobalSystem system = assemble_cells(space, C, out.local);
+  add_boundary_load(
+      mesh, space, C, conditions.natural, to_true_boundary,
+      [&](Index tag, const Vec3& at, double* values) {
+        const auto& value = conditions.of_tag[tag]->value;
+        const NodeVector<C> g = value ? as_node_vector(value(at)) : NodeVector<C>::Zero();
+        std::copy(g.data(), g.data() + C, values);
+      },
+      system.rhs);
+
+  const Index nn = space.num_nodes();
+  const std::vector<Index> essential_tag = lowest_marked_tag(mesh, space, conditions.essential);
+  std::vector<char> fixed(C * std::size_t(nn), 0);
+  Eigen::VectorXd fixed_values = Eigen::VectorXd::Zero(C * Eigen::Index(nn));
+  for (Index n = 0; n < nn; ++n) {
+    if (essential_tag[n] == kNoIndex) continue;
+    std::fill_n(fixed.begin() + C * std::size_t(n), C, 1);
+    const auto& value = conditions.of_tag[essential_tag[n]]->value;
+    if (value)
+      fixed_values.segment<C>(C * Eigen::Index(n)) =
+          as_node_vector(value(on_true_boundary(to_true_boundary, space.node_point[n])));
+  }
+  report.assembly_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.u = solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options, report);
+  return out;
+}
+
+// The largest |u − u_h| at the nodes.
+template <int C, class Exact>
+double nodal_max_error(const SolvedField& field, const Exact& exact) {
+  double out = 0.0;
+  for (Index n = 0; n < field.space->num_nodes(); ++n)
+    out = std::max(out, (as_node_vector(exact(field.space->node_point[n])) -
+                         field.u.segment<C>(C * Eigen::Index(n)))
+                            .norm());
+  return out;
+}
+
+// u_h and its gradient (row i: ∇ of component i) at a quadrature point.
+template <int C>
+struct PointValue {
+  NodeVector<C> u;
+  Eigen::Matrix<double, C, 3> gradient;
+};
+
+// Per cell, in parallel: fn(c, x, weight, value, result) at each point of the cell's
+// `rule`, u_h from the solved field; result.volume sums the weights. Results in cell order.
+template <int C, class CellResult, class Fn>
+std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, const Fn& fn) {
+  std::vector<CellResult> out(field.space->num_cells());
+  for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
+    Eigen::VectorXd local_u;
+    cell_unknowns(*field.space, C, field.local, c, field.u, work, local_u);
+    field.space->cell_points(c, rule, work.load);
+    const CellPoints& q = work.load;
+    CellResult& r = out[c];
+    for_each_point(q, [&](int p, const int* nodes, int count) {
+      const double* value = q.value.data() + q.shape_begin[p];
+      const Vec3* grad = q.gradient.data() + q.shape_begin[p];
+      PointValue<C> v;
+      v.u.setZero();
+      v.gradient.setZero();
+      for (int a = 0; a < count; ++a) {
+        const NodeVector<C> ua = local_u.segment<C>(C * nodes[a]);
+        v.u += value[a] * ua;
+        v.gradient += ua * grad[a].transpose();
+      }
+      r.volume += q.weight[p];
+      fn(c, q.x[p], q.weight[p], v, r);
+    });
+  });
+  return out;
+}
+
+}  // namespace volmesh::fem::detail
