@@ -3,7 +3,7 @@
 #include <limits>
 #include <optional>
 
-#include "problem_closest_shapes.hpp"
+#include "volmesh/domain/analytic_closest.hpp"
 #include "volmesh/domain/analytic.hpp"
 #include "volmesh/fem/problems.hpp"
 

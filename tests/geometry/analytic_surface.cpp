@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "geometric_error.hpp"
+#include "volmesh/domain/analytic_closest.hpp"
 
 namespace volmesh::geometry {
 namespace {
@@ -25,21 +26,6 @@ double segment_distance(const Vec3& q, const Vec3& a, const Vec3& b) {
   const Vec3 d = b - a;
   const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
   return (q - (a + t * d)).norm();
-}
-
-double box_distance(const Box& box, const Vec3& q) {
-  const Vec3 outside = (box.lo - q).cwiseMax(q - box.hi).cwiseMax(0.0);
-  if (outside.squaredNorm() > 0.0) return outside.norm();
-  return (q - box.lo).cwiseMin(box.hi - q).minCoeff();
-}
-
-// The rectangle [0, r] x [z0, z1] in (distance from the axis, z), without its axis side.
-double cylinder_distance(const Cylinder& c, const Vec3& q) {
-  const double rho = std::hypot(q.x(), q.y());
-  const double out_r = std::max(rho - c.radius, 0.0);
-  const double out_z = std::max({c.z0 - q.z(), q.z() - c.z1, 0.0});
-  if (out_r > 0.0 || out_z > 0.0) return std::hypot(out_r, out_z);
-  return std::min({c.radius - rho, q.z() - c.z0, c.z1 - q.z()});
 }
 
 double box_edges_distance(const Box& box, const Vec3& q) {
@@ -144,111 +130,10 @@ std::vector<SurfacePoint> ellipsoid_samples(const Ellipsoid& e, double spacing) 
   return out;
 }
 
-// Eberly, "Distance from a point to an ellipse, an ellipsoid, or a hyperellipsoid": the
-// closest point's Lagrange parameter s solves sum (r_i z_i / (s + r_i))^2 = 1, a function
-// monotone on the bracket used, found by bisection down to the last bit. Semi-axes sorted
-// e0 >= e1 (>= e2), the point in the first octant.
-double bisect(const double* r, const double* z, int n, double g) {
-  double lo = z[n - 1] - 1.0, hi = 0.0;
-  if (g >= 0.0) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) sum += (r[i] * z[i]) * (r[i] * z[i]);
-    hi = std::sqrt(sum) - 1.0;
-  }
-  double s = 0.0;
-  for (int iteration = 0; iteration < 2000; ++iteration) {
-    s = 0.5 * (lo + hi);
-    if (s == lo || s == hi) break;
-    double value = -1.0;
-    for (int i = 0; i < n; ++i) value += (r[i] * z[i] / (s + r[i])) * (r[i] * z[i] / (s + r[i]));
-    if (value > 0.0)
-      lo = s;
-    else if (value < 0.0)
-      hi = s;
-    else
-      break;
-  }
-  return s;
-}
-
-double ellipse_distance(double e0, double e1, double y0, double y1) {
-  if (y1 > 0.0) {
-    if (y0 > 0.0) {
-      const double z[2] = {y0 / e0, y1 / e1};
-      const double g = z[0] * z[0] + z[1] * z[1] - 1.0;
-      if (g == 0.0) return 0.0;
-      const double r[2] = {(e0 / e1) * (e0 / e1), 1.0};
-      const double s = bisect(r, z, 2, g);
-      return std::hypot(r[0] * y0 / (s + r[0]) - y0, y1 / (s + 1.0) - y1);
-    }
-    return std::abs(y1 - e1);
-  }
-  const double numerator = e0 * y0, denominator = e0 * e0 - e1 * e1;
-  if (numerator < denominator) {
-    const double x = numerator / denominator;
-    return std::hypot(e0 * x - y0, e1 * std::sqrt(1.0 - x * x));
-  }
-  return std::abs(y0 - e0);
-}
-
-double sorted_ellipsoid_distance(const double e[3], const double y[3]) {
-  if (y[2] > 0.0) {
-    if (y[1] > 0.0) {
-      if (y[0] > 0.0) {
-        const double z[3] = {y[0] / e[0], y[1] / e[1], y[2] / e[2]};
-        const double g = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] - 1.0;
-        if (g == 0.0) return 0.0;
-        const double r[3] = {(e[0] / e[2]) * (e[0] / e[2]), (e[1] / e[2]) * (e[1] / e[2]), 1.0};
-        const double s = bisect(r, z, 3, g);
-        Vec3 d;
-        for (int i = 0; i < 3; ++i) d[i] = r[i] * y[i] / (s + r[i]) - y[i];
-        return d.norm();
-      }
-      return ellipse_distance(e[1], e[2], y[1], y[2]);
-    }
-    if (y[0] > 0.0) return ellipse_distance(e[0], e[2], y[0], y[2]);
-    return std::abs(y[2] - e[2]);
-  }
-  // On the plane of the two largest axes: the closest point may leave it (inside, near the
-  // medial disc), else it is the ellipse's.
-  const double d0 = e[0] * e[0] - e[2] * e[2], d1 = e[1] * e[1] - e[2] * e[2];
-  const double ey0 = e[0] * y[0], ey1 = e[1] * y[1];
-  if (ey0 < d0 && ey1 < d1) {
-    const double x0 = ey0 / d0, x1 = ey1 / d1;
-    const double discriminant = 1.0 - x0 * x0 - x1 * x1;
-    if (discriminant > 0.0)
-      return Vec3(e[0] * x0 - y[0], e[1] * x1 - y[1], e[2] * std::sqrt(discriminant)).norm();
-  }
-  return ellipse_distance(e[0], e[1], y[0], y[1]);
-}
-
 }  // namespace
 
-double ellipsoid_distance(const Vec3& semi_axes, const Vec3& y) {
-  int order[3] = {0, 1, 2};
-  std::sort(order, order + 3, [&](int a, int b) { return semi_axes[a] > semi_axes[b]; });
-  double e[3], q[3];
-  for (int i = 0; i < 3; ++i) {
-    e[i] = semi_axes[order[i]];
-    q[i] = std::abs(y[order[i]]);
-  }
-  return sorted_ellipsoid_distance(e, q);
-}
-
 double surface_distance(const Primitive& primitive, const Vec3& p) {
-  const Vec3 q = to_local(primitive, p);
-  return std::visit(
-      Overloaded{
-          [&](const Sphere& s) { return std::abs(q.norm() - s.radius); },
-          [&](const Box& b) { return box_distance(b, q); },
-          [&](const Cylinder& c) { return cylinder_distance(c, q); },
-          [&](const Torus& t) {
-            return std::abs(std::hypot(std::hypot(q.x(), q.y()) - t.major, q.z()) - t.minor);
-          },
-          [&](const Ellipsoid& e) { return ellipsoid_distance(e.semi_axes, q); },
-          [&](const HalfSpace& h) { return std::abs(q.z() - h.offset); },
-      },
-      primitive.shape);
+  return (closest_surface_point(primitive, p).point - p).norm();
 }
 
 double feature_distance(const Primitive& primitive, const Vec3& p) {

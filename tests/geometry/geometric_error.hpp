@@ -16,8 +16,8 @@ namespace volmesh::geometry {
 
 // ---- one analytic primitive (analytic_surface.cpp) ----
 
-// Exact distance from p (world coordinates) to the primitive's surface. The ellipsoid's is
-// a robust 1-D root solve (Eberly's bisection), the others closed forms.
+// Exact distance from p (world coordinates) to the primitive's surface, through
+// closest_surface_point (volmesh/domain/analytic_closest.hpp).
 double surface_distance(const Primitive& primitive, const Vec3& p);
 // Distance from p to the primitive's sharp edges (the 12 edges of a box, the 2 rims of a
 // cylinder); +infinity for smooth primitives.
@@ -30,9 +30,6 @@ struct SurfacePoint {
 std::vector<SurfacePoint> sample_surface(const Primitive& primitive, double spacing);
 // Volume enclosed by the primitive (+infinity for a half-space).
 double solid_volume(const Primitive& primitive);
-
-// The ellipsoid with semi-axes e (any order), centred at 0, axis-aligned: distance from y.
-double ellipsoid_distance(const Vec3& semi_axes, const Vec3& y);
 
 // ---- a mesh against the domain (mesh_hausdorff.cpp) ----
 

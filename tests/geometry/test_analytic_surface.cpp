@@ -54,7 +54,7 @@ TEST(AnalyticSurface, EllipsoidDistanceMatchesBruteForce) {
   for (const Vec3& q : queries) {
     double nearest = std::numeric_limits<double>::infinity();
     for (const SurfacePoint& s : dense) nearest = std::min(nearest, (s.point - q).norm());
-    const double exact = ellipsoid_distance(semi, q);
+    const double exact = surface_distance(e, q);
     EXPECT_LE(exact, nearest + 1e-12) << q.transpose();
     EXPECT_GT(exact, nearest - spacing) << q.transpose();
   }

@@ -5,9 +5,9 @@
 #include <limits>
 #include <utility>
 
-#include "problem_closest_shapes.hpp"
+#include "volmesh/domain/analytic_closest.hpp"
 
-namespace volmesh::fem {
+namespace volmesh {
 namespace {
 
 using Plane = std::array<double, 2>;
@@ -172,4 +172,4 @@ SurfacePoint closest_surface_point(const Primitive& prim, const Vec3& p) {
   return {rot * s.point + prim.frame.translation, rot * s.normal};
 }
 
-}  // namespace volmesh::fem
+}  // namespace volmesh

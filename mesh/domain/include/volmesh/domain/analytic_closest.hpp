@@ -1,8 +1,10 @@
 #pragma once
-// The closest surface point of one analytic primitive (analytic.hpp), exact up to rounding.
+// The closest surface point of one analytic primitive (analytic.hpp), exact up to rounding:
+// closed forms, and Eberly's robust bisection for ellipsoids. Boundary data on the TRUE
+// boundary (fem) and the geometric-error yardstick (tests/geometry) both stand on it.
 #include "volmesh/domain/analytic.hpp"
 
-namespace volmesh::fem {
+namespace volmesh {
 
 // The closest point of prim's surface to p, and the unit outward normal there, both in world
 // coordinates. A point with several closest points (a sphere's centre, a torus axis point)
@@ -13,4 +15,4 @@ struct SurfacePoint {
 };
 SurfacePoint closest_surface_point(const Primitive& prim, const Vec3& p);
 
-}  // namespace volmesh::fem
+}  // namespace volmesh
