@@ -62,13 +62,15 @@ TEST(CliMesh, BaseLevelAtTheLevelIsAUniformGrid) {
 
 TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   const fs::path dir = test::scratch_dir("mesh-threads");
-  for (const char* t : {"1", "2"}) {
-    const auto r = run_volmesh(std::string("mesh staircase builtin:primitives --level 4 --threads ") +
-                                   t + " -o " + (dir / (std::string("p") + t + ".vtu")).string(),
-                               dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string method : {"staircase", "cutcell"}) {
+    for (const char* t : {"1", "2"}) {
+      const auto r = run_volmesh("mesh " + method + " builtin:primitives --level 4 --threads " + t +
+                                     " -o " + (dir / (method + t + ".vtu")).string(),
+                                 dir);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    EXPECT_EQ(test::slurp(dir / (method + "1.vtu")), test::slurp(dir / (method + "2.vtu"))) << method;
   }
-  EXPECT_EQ(test::slurp(dir / "p1.vtu"), test::slurp(dir / "p2.vtu"));
 }
 
 TEST(CliMesh, GridHexesAndKuhnTets) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/shell.hpp"
 #include "../support/temp_dir.hpp"
 #include "volmesh/core/poly_mesh.hpp"
 
@@ -29,9 +30,6 @@ void expect_same_mesh(const PolyMesh& expected, const PolyMesh& actual);
 std::map<std::string, long> cell_type_counts(const PolyMesh& mesh);
 
 std::string file_bytes(const std::filesystem::path& path);
-
-// Runs a shell command; returns its exit status and puts its stdout in *output.
-int run(const std::string& command, std::string* output);
 
 // Runs tests/io/external/<script> with Debian's python (which has meshio). Fails the test
 // with a hint when meshio is missing; returns the script's stdout.

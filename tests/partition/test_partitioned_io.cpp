@@ -81,7 +81,7 @@ std::vector<nlohmann::json> meshio_read(const std::vector<fs::path>& files) {
 }
 
 TEST(Pvtu, VtkReadsTheWholeMeshBack) {
-  ScratchDir dir;
+  TempDir dir;
   const PolyMesh mesh = two_region_grid();
   const Partition p = partition_mesh(mesh, {.parts = 4});
   write_pvtu(pieces_of(mesh, p.cell_part, 4), dir / "parts.pvtu");
@@ -115,7 +115,7 @@ TEST(Pvtu, VtkReadsTheWholeMeshBack) {
 // meshio has no PVTU reader: it reads the pieces the summary names, which together hold the
 // cells and volume meshio finds in the unpartitioned file.
 TEST(Pvtu, MeshioFindsTheSameCellsAsInTheWholeMesh) {
-  ScratchDir dir;
+  TempDir dir;
   const PolyMesh mesh = two_region_grid();
   const Partition p = partition_mesh(mesh, {.parts = 5});
   write_pvtu(pieces_of(mesh, p.cell_part, 5), dir / "parts.pvtu");
@@ -141,7 +141,7 @@ TEST(Pvtu, MeshioFindsTheSameCellsAsInTheWholeMesh) {
 // cells only because a piece orders its cells by vertex count (part_mesh.hpp); it cannot read
 // the whole mesh, whose big cube (13 vertices) comes first.
 TEST(Pvtu, MeshioReadsPolyhedralPieces) {
-  ScratchDir dir;
+  TempDir dir;
   write_pvtu(pieces_of(big_cube_next_to_four_small(true), {0, 1, 1, 0, 1}, 2), dir / "cubes.pvtu");
   const auto seen = meshio_read({dir / "cubes.pvtu"});
   if (seen.size() != 1) return;
@@ -156,7 +156,7 @@ TEST(Pvtu, MeshioReadsPolyhedralPieces) {
 }
 
 TEST(Pvtu, SameMeshSameBytes) {
-  ScratchDir dir;
+  TempDir dir;
   const PolyMesh mesh = two_region_grid();
   const Partition p = partition_mesh(mesh, {.parts = 3});
   write_pvtu(pieces_of(mesh, p.cell_part, 3), dir / "a.pvtu");
@@ -174,7 +174,7 @@ TEST(Pvtu, SameMeshSameBytes) {
 // A second run replaces the earlier pieces (4 become 2), but a directory holding anything
 // else is left alone, and so is everything when a piece cannot be written.
 TEST(Pvtu, WrittenAsASetOrNotAtAll) {
-  ScratchDir dir;
+  TempDir dir;
   const PolyMesh mesh = two_region_grid();
   const auto pieces4 = pieces_of(mesh, partition_mesh(mesh, {.parts = 4}).cell_part, 4);
   const auto pieces2 = pieces_of(mesh, partition_mesh(mesh, {.parts = 2}).cell_part, 2);
@@ -219,7 +219,7 @@ TEST(Pvtu, WrittenAsASetOrNotAtAll) {
 // same cells and volume as the mesh. (meshio 5 cannot read partitioned MSH 4.1 files at all,
 // not even gmsh's own: it looks their partitioned entities up among the model entities.)
 TEST(PartitionedMsh, GmshReadsThePartitions) {
-  ScratchDir dir;
+  TempDir dir;
   if (!have_gmsh()) return;
   const PolyMesh mesh = two_region_grid();
   const Partition p = partition_mesh(mesh, {.parts = 3});
@@ -246,7 +246,7 @@ TEST(PartitionedMsh, GmshReadsThePartitions) {
 }
 
 TEST(PartitionedMsh, SameMeshSameBytes) {
-  ScratchDir dir;
+  TempDir dir;
   const PolyMesh mesh = two_region_grid();
   const Partition p = partition_mesh(mesh, {.parts = 4});
   write_msh_partitioned(mesh, p.cell_part, 4, dir / "a.msh");
@@ -255,7 +255,7 @@ TEST(PartitionedMsh, SameMeshSameBytes) {
 }
 
 TEST(PartitionedMsh, PolyhedraAreRefusedWithoutAFile) {
-  ScratchDir dir;
+  TempDir dir;
   try {
     write_msh_partitioned(big_cube_next_to_four_small(), std::vector<Index>{0, 0, 1, 1, 1}, 2,
                           dir / "c.msh");
