@@ -33,6 +33,8 @@ void elasticity_local(const FeSpace& space, Index c, const LameParameters& lame,
       }
     }
   });
+  // The P-wave modulus scales the stabilisation like the stiffness of a one-axis strain.
+  detail::add_stabilization<3>(s, lame.lambda + 2.0 * lame.mu, work.k);
   if (!body_force) return;
   space.cell_points(c, Rule::load, work.load);
   const CellPoints& l = work.load;

@@ -25,6 +25,7 @@ void poisson_local(const FeSpace& space, Index c, double conductivity, const Sca
       for (int b = 0; b < count; ++b) work.k(nodes[a], nodes[b]) += wa.dot(grad[b]);
     }
   });
+  detail::add_stabilization<1>(s, conductivity, work.k);
   if (!source) return;
   space.cell_points(c, Rule::load, work.load);
   const CellPoints& l = work.load;

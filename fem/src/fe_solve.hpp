@@ -32,6 +32,20 @@ void for_each_point(const CellPoints& q, Fn&& fn) {
       fn(p, q.nodes.data() + g.node_begin, g.node_count);
 }
 
+// k += modulus · Σ scale·r rᵀ over the cell's stabilisation rows, for each of the C unknowns
+// per node (node-major).
+template <int C>
+void add_stabilization(const CellPoints& q, double modulus, Eigen::MatrixXd& k) {
+  const Eigen::Index n = k.rows() / C;
+  for (std::size_t t = 0; t < q.stabilization_scale.size(); ++t) {
+    const Eigen::Map<const Eigen::VectorXd> r(q.stabilization_rows.data() + t * n, n);
+    const Eigen::MatrixXd rr = (modulus * q.stabilization_scale[t]) * r * r.transpose();
+    for (Eigen::Index a = 0; a < n; ++a)
+      for (Eigen::Index b = 0; b < n; ++b)
+        for (int d = 0; d < C; ++d) k(C * a + d, C * b + d) += rr(a, b);
+  }
+}
+
 // The condition of every boundary tag, and which tags carry an essential one.
 template <class Condition>
 struct TagConditions {

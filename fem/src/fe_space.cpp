@@ -20,6 +20,8 @@ void CellPoints::clear() {
   shape_begin.clear();
   value.clear();
   gradient.clear();
+  stabilization_scale.clear();
+  stabilization_rows.clear();
 }
 
 void CellPoints::begin_group(std::span<const int> local_nodes) {

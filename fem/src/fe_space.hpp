@@ -37,6 +37,11 @@ struct CellPoints {
   std::vector<std::size_t> shape_begin;  // per point, into value and gradient
   std::vector<double> value;             // node_count entries per point
   std::vector<Vec3> gradient;            // node_count entries per point
+  // Stiffness terms beyond the points, scale·(r·u)(r·v) for each unknown per node: r a row
+  // over all the cell's local nodes (the virtual-element stabilisation of
+  // fe_space_polyhedral.cpp). The problem multiplies them by its modulus.
+  std::vector<double> stabilization_scale;
+  std::vector<double> stabilization_rows;  // one row per scale, every local node
 
   void clear();
   void begin_group(std::span<const int> local_nodes);

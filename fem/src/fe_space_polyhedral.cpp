@@ -1,5 +1,8 @@
 // The polyhedral space (fem.hpp): P1 on the sub-tessellation of polyhedral.hpp, face nodes
 // tied to the mean of their face's vertices, one condensed node per cell at its star centre.
+// A cell with no star centre (a cut cell at a junction of interfaces can be bent so that no
+// point sees all its face triangles) is a lowest-order virtual element on the same face
+// triangles instead, so that the space stays conforming; its cell node is idle.
 // Global nodes are the mesh vertices; a cell's local nodes are its distinct vertices in
 // increasing point order, then the cell node.
 #include <tbb/blocked_range.h>
@@ -63,8 +66,14 @@ class PolyhedralSpace final : public FeSpace {
         seen[c] = 1;
       }
     });
-    const auto bad = std::find(seen.begin(), seen.end(), 0);
-    if (bad != seen.end()) throw_not_star_shaped(static_cast<Index>(bad - seen.begin()));
+    virtual_of_.assign(nc, kNoIndex);
+    for (Index c = 0; c < nc; ++c) {
+      if (seen[c]) continue;
+      auto element = virtual_element(mesh, splits_, cell_faces_.of(c), c, cell_vertices(c));
+      if (!element) throw_folded(c);
+      virtual_of_[c] = static_cast<Index>(virtual_.size());
+      virtual_.push_back(std::move(*element));
+    }
 
     std::vector<char> used(mesh.num_points(), 0);
     for (Index v : vertices_) used[v] = 1;
@@ -76,8 +85,11 @@ class PolyhedralSpace final : public FeSpace {
 
   int internal_nodes() const override { return 1; }
 
+  Index virtual_cells() const { return static_cast<Index>(virtual_.size()); }
+
   void cell_points(Index c, Rule rule, CellPoints& out) const override {
     out.clear();
+    if (virtual_of_[c] != kNoIndex) return virtual_points(virtual_[virtual_of_[c]], c, rule, out);
     const std::span<const Index> vertices = cell_vertices(c);
     const int cell_node = static_cast<int>(vertices.size());
     // Loads at each sub-tetrahedron's centroid: exact for linear data, which is what the
@@ -180,31 +192,70 @@ class PolyhedralSpace final : public FeSpace {
   }
 
  private:
+  // The virtual element's points: its projection Π u_h, exact for the consistency term in one
+  // point at the centroid, on signed cones from the vertex average for loads and errors; the
+  // stabilisation h_E Σ_l ((I − Π)u)(x_l) ((I − Π)v)(x_l) over its vertices (the "dofi-dofi"
+  // choice), and the idle cell node held at 0 by a term of the same size.
+  void virtual_points(const VirtualElement& e, Index c, Rule rule, CellPoints& out) const {
+    const std::span<const Index> vertices = cell_vertices(c);
+    const int n = static_cast<int>(vertices.size());
+    std::vector<int> all(n + 1);
+    for (int i = 0; i <= n; ++i) all[i] = i;
+    out.begin_group(all);
+    const auto add = [&](double w, const Vec3& x) {
+      const int i = out.add_point(w, x);
+      auto value = out.values(i);
+      auto gradient = out.gradients(i);
+      for (int k = 0; k < n; ++k) {
+        value[k] = 1.0 / n + e.gradient[k].dot(x - e.vertex_average);
+        gradient[k] = e.gradient[k];
+      }
+    };
+    if (rule == Rule::stiffness) {
+      add(e.volume, e.centroid);
+      const double scale = std::cbrt(e.volume);
+      for (int l = 0; l < n; ++l) {
+        out.stabilization_scale.push_back(scale);
+        const Vec3 offset = mesh_.points[vertices[l]] - e.vertex_average;
+        for (int k = 0; k < n; ++k)
+          out.stabilization_rows.push_back((k == l) - 1.0 / n - e.gradient[k].dot(offset));
+        out.stabilization_rows.push_back(0.0);
+      }
+      out.stabilization_scale.push_back(scale);
+      out.stabilization_rows.resize(out.stabilization_rows.size() + n, 0.0);
+      out.stabilization_rows.push_back(1.0);
+      return;
+    }
+    const auto rule_points = tet_rule(rule == Rule::accurate ? 5 : 1);
+    for_each_sub_tetrahedron(
+        mesh_, splits_, cell_faces_.of(c), c, e.vertex_average, [&](const SubTetrahedron& t) {
+          const double volume = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+          for (const auto& q : rule_points) {
+            const auto& l = q.barycentric;
+            add(volume * q.weight, l[0] * t.corners[0] + l[1] * t.corners[1] +
+                                       l[2] * t.corners[2] + l[3] * t.corners[3]);
+          }
+        });
+  }
+
   std::span<const Index> cell_vertices(Index c) const {
     return {vertices_.data() + vertex_offsets_[c],
             static_cast<std::size_t>(vertex_offsets_[c + 1] - vertex_offsets_[c])};
   }
 
-  // The message for a cell without a star centre, with the worst sub-tetrahedron seen from
-  // its vertex average.
-  [[noreturn]] void throw_not_star_shaped(Index c) const {
-    std::vector<Index> vertices;
-    sorted_cell_vertices(mesh_, cell_faces_.of(c), vertices);
+  // The message for a cell neither star-shaped nor a valid virtual element, with its volume
+  // as its face triangles give it.
+  [[noreturn]] void throw_folded(Index c) const {
+    const std::span<const Index> vertices = cell_vertices(c);
     Vec3 average = Vec3::Zero();
     for (Index v : vertices) average += mesh_.points[v] / static_cast<double>(vertices.size());
-    double worst = 0.0;
-    Index face = kNoIndex;
-    for_each_sub_tetrahedron(
-        mesh_, splits_, cell_faces_.of(c), c, average, [&](const SubTetrahedron& t) {
-          const double v = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
-          if (face == kNoIndex || v < worst) worst = v, face = t.face;
-        });
+    double volume = 0.0;
+    for_each_sub_tetrahedron(mesh_, splits_, cell_faces_.of(c), c, average, [&](const SubTetrahedron& t) {
+      volume += tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+    });
     std::ostringstream message;
-    message << "mesh: cell " << c
-            << ": inverted, degenerate or not star-shaped: no point inside sees all its faces";
-    if (face != kNoIndex)
-      message << " (from its vertex average, face " << face << " gives a sub-tetrahedron of volume "
-              << worst << ")";
+    message << "mesh: cell " << c << ": inverted, degenerate or folded: volume " << volume
+            << (volume > 0.0 ? ", and a face folds over itself" : "");
     throw InputError(message.str());
   }
 
@@ -214,6 +265,8 @@ class PolyhedralSpace final : public FeSpace {
   std::vector<Index> vertex_offsets_;
   std::vector<Index> vertices_;  // per cell, sorted distinct vertices
   std::vector<Vec3> apex_;       // per cell, its star centre: the cell node
+  std::vector<Index> virtual_of_;  // per cell, into virtual_, or kNoIndex
+  std::vector<VirtualElement> virtual_;
 };
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/core/tri_surface.hpp"
+#include "volmesh/io/surface_check.hpp"
 
 namespace volmesh::fem {
 namespace {
@@ -84,6 +86,26 @@ std::vector<std::array<int, 3>> ear_clip(const PolyMesh& mesh, Index f) {
   return triangles;
 }
 
+// The fan about the vertex average as triangles of loop positions, n standing for the face
+// node.
+std::vector<std::array<int, 3>> fan_triangles(std::size_t n) {
+  std::vector<std::array<int, 3>> out;
+  for (std::size_t k = 0; k < n; ++k)
+    out.push_back({static_cast<int>(k), static_cast<int>((k + 1) % n), static_cast<int>(n)});
+  return out;
+}
+
+// True when two of the triangles (loop positions of face f; position size() is the vertex
+// average) meet in more than a shared vertex or edge, by CGAL's exact predicates.
+bool crosses_itself(const PolyMesh& mesh, Index f, const std::vector<std::array<int, 3>>& triangles) {
+  const auto loop = mesh.face(f);
+  TriSurface s;
+  for (Index v : loop) s.points.push_back(mesh.points[v]);
+  s.points.push_back(face_vertex_average(mesh, f));
+  for (const auto& t : triangles) s.triangles.push_back({t[0], t[1], t[2]});
+  return !find_self_intersections(s, 1).empty();
+}
+
 bool sees_every_face(const PolyMesh& mesh, const FaceSplits& splits, std::span<const Index> faces,
                      Index c, const Vec3& x) {
   bool ok = true;
@@ -98,10 +120,16 @@ bool sees_every_face(const PolyMesh& mesh, const FaceSplits& splits, std::span<c
 FaceSplits split_faces(const PolyMesh& mesh) {
   FaceSplits splits;
   splits.offsets.assign(mesh.num_faces() + 1, 0);
+  splits.folded.assign(mesh.num_faces(), 0);
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face(f).size() > 3 && !fan_is_proper(mesh, f)) {
+      // A warped face whose projection folds may still have a fan or an ear clipping that
+      // does not cross itself in space: the first of those that does not is the face's.
       const auto triangles = ear_clip(mesh, f);
-      splits.triangles.insert(splits.triangles.end(), triangles.begin(), triangles.end());
+      if (!triangles.empty() && !crosses_itself(mesh, f, triangles))
+        splits.triangles.insert(splits.triangles.end(), triangles.begin(), triangles.end());
+      else
+        splits.folded[f] = crosses_itself(mesh, f, fan_triangles(mesh.face(f).size()));
     }
     splits.offsets[f + 1] = static_cast<Index>(splits.triangles.size());
   }

@@ -166,11 +166,9 @@ inline PolyMesh plane_cut_grid(Index n, const Vec3& normal, double offset) {
   return mesh;
 }
 
-// `layers` unit-high prisms stacked along z on an L-shaped profile with a long arm: cells
-// whose vertex average lies outside them, joined by non-convex L faces whose fan about the
-// vertex average folds. Tags: "zmin", "zmax", and "side0" … "side5" for the prism walls.
-inline PolyMesh l_prism_stack(int layers) {
-  const std::vector<Eigen::Vector2d> profile{{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 6}, {0, 6}};
+// `layers` unit-high prisms stacked along z on a polygonal profile (counter-clockwise).
+// Tags: "zmin", "zmax", and "side0" … for the prism walls.
+inline PolyMesh prism_stack(const std::vector<Eigen::Vector2d>& profile, int layers) {
   const Index n = static_cast<Index>(profile.size());
   PolyMesh mesh;
   for (int z = 0; z <= layers; ++z)
@@ -197,6 +195,18 @@ inline PolyMesh l_prism_stack(int layers) {
     }
   mesh.cell_region.assign(layers, 1);
   return mesh;
+}
+
+// Prisms on an L-shaped profile with a long arm: cells whose vertex average lies outside
+// them, joined by non-convex L faces whose fan about the vertex average folds.
+inline PolyMesh l_prism_stack(int layers) {
+  return prism_stack({{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 6}, {0, 6}}, layers);
+}
+
+// Prisms on a U-shaped profile with long arms: no point sees the tops of both arms, so the
+// cells are not star-shaped and the polyhedral space takes them as virtual elements.
+inline PolyMesh u_prism_stack(int layers) {
+  return prism_stack({{0, 0}, {5, 0}, {5, 5}, {4, 5}, {4, 1}, {1, 1}, {1, 5}, {0, 5}}, layers);
 }
 
 // Moves every point along a smooth, non-affine field that vanishes on the cube's sides: the

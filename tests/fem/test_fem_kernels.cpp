@@ -188,5 +188,33 @@ TEST(Polyhedral, NonConvexFacesAndCellsFindATriangulationAndACentre) {
   EXPECT_NEAR(volume, 11.0, 1e-12);  // (6 + 5) × 1 × height 1
 }
 
+// A U-shaped prism with long arms has no star centre. Its virtual element has the cell's
+// volume and centroid, and a projection that reproduces linear functions:
+// Σ_i x_i g_iᵀ = I and Σ_i g_i = 0.
+TEST(Polyhedral, AUShapedPrismIsAVirtualElement) {
+  const PolyMesh mesh = test::u_prism_stack(1);
+  const FaceSplits splits = split_faces(mesh);
+  const CellFaces cf = build_cell_faces(mesh);
+  EXPECT_FALSE(star_centre(mesh, splits, cf.of(0), 0));
+  std::vector<Index> vertices(mesh.num_points());
+  for (Index v = 0; v < mesh.num_points(); ++v) vertices[v] = v;
+  const auto e = virtual_element(mesh, splits, cf.of(0), 0, vertices);
+  ASSERT_TRUE(e);
+  EXPECT_NEAR(e->volume, 13.0, 1e-12);  // 5 × 1 + 2 arms × 4 × 1, height 1
+  // Centroid: the bar [0,5]×[0,1] and the arms [0,1]×[1,5], [4,5]×[1,5], all at z = 1/2.
+  EXPECT_LT((e->centroid - Vec3((5 * 2.5 + 4 * 0.5 + 4 * 4.5) / 13.0,
+                                (5 * 0.5 + 4 * 3.0 + 4 * 3.0) / 13.0, 0.5))
+                .norm(),
+            1e-12);
+  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+  Vec3 sum = Vec3::Zero();
+  for (Index v = 0; v < mesh.num_points(); ++v) {
+    moment += mesh.points[v] * e->gradient[v].transpose();
+    sum += e->gradient[v];
+  }
+  EXPECT_LT((moment - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  EXPECT_LT(sum.norm(), 1e-12);
+}
+
 }  // namespace
 }  // namespace volmesh::fem

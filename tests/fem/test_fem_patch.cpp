@@ -1,7 +1,8 @@
 // Patch tests: every space reproduces a linear solution to rounding — Poisson (values,
 // gradients, cell means) and elasticity (displacements, constant stresses) — on tets, hexes,
 // octree cells with hanging faces and warped cut cells, with Dirichlet data everywhere or
-// fluxes/tractions on some sides; on stacked L-shaped prisms (non-convex faces and cells);
+// fluxes/tractions on some sides; on stacked L- and U-shaped prisms (non-convex faces and
+// cells, the U's with no star centre);
 // and a piecewise-linear solution across a material interface the mesh follows.
 #include <gtest/gtest.h>
 
@@ -153,7 +154,9 @@ TEST_P(Patch, ElasticityReproducesALinearDisplacement) {
     EXPECT_LT(s.errors->l2, kTolerance) << "traction " << with_traction;
     EXPECT_LT(s.errors->linf, kTolerance);
     EXPECT_LT(s.errors->h1, kTolerance);
-    if (GetParam().space != Space::p2) EXPECT_EQ(s.dofs, 3 * mesh.num_points());
+    if (GetParam().space != Space::p2) {
+      EXPECT_EQ(s.dofs, 3 * mesh.num_points());
+    }
     for (Index p = 0; p < mesh.num_points(); ++p)
       EXPECT_LT((s.point_values[p] - exact(mesh.points[p])).norm(), kTolerance) << "point " << p;
     ElasticityProblem plain = problem;
@@ -203,10 +206,8 @@ void expect_interface_reproduced(const PolyMesh& mesh, const Interface& interfac
   EXPECT_LT(s.errors->h1, kTolerance);
 }
 
-// Stacked L-shaped prisms: non-convex faces inside and out, cells not star-shaped about
-// their vertex average. Dirichlet data on zmin and side0, fluxes and tractions elsewhere.
-TEST(PatchNonConvex, LinearSolutionsOnLShapedPrisms) {
-  const PolyMesh mesh = test::l_prism_stack(3);
+// Dirichlet data on zmin and side0 of stacked prisms, fluxes and tractions elsewhere.
+void expect_linear_solutions_on_prisms(const PolyMesh& mesh) {
   EXPECT_TRUE(check_validity(mesh).valid());
   std::map<std::string, Vec3> normal;
   for (Index f = 0; f < mesh.num_faces(); ++f)
@@ -254,6 +255,17 @@ TEST(PatchNonConvex, LinearSolutionsOnLShapedPrisms) {
   EXPECT_LT(v.errors->h1, kTolerance);
   for (const Eigen::Matrix3d& sigma : v.cell_stress)
     EXPECT_LT((sigma - stress).norm(), kTolerance * stress.norm());
+}
+
+// Non-convex faces inside and out, cells not star-shaped about their vertex average (but
+// about a point of the L's corner).
+TEST(PatchNonConvex, LinearSolutionsOnLShapedPrisms) {
+  expect_linear_solutions_on_prisms(test::l_prism_stack(3));
+}
+
+// Cells not star-shaped at all: virtual elements, whose projection reproduces linear fields.
+TEST(PatchNonConvex, LinearSolutionsOnUShapedPrisms) {
+  expect_linear_solutions_on_prisms(test::u_prism_stack(3));
 }
 
 TEST(PatchInterface, TwoMaterialsAcrossHangingFaces) {

@@ -6,7 +6,8 @@
 // average m — the fan core/geometry.hpp uses for face areas and cell volumes — when that fan
 // is proper (every triangle turns the same way as the face). A non-convex face (a cube face
 // cut along a bent contour) can fold its fan; it is triangulated by ear clipping instead,
-// without a face node. The split is a property of the face, so both of its cells use it.
+// without a face node, unless those triangles cross in space (a warped face). The split is a
+// property of the face, so both of its cells use it.
 // Cells: a tetrahedron (apex, triangle) on every face triangle, about an apex that sees them
 // all (star_centre).
 #include <array>
@@ -27,10 +28,13 @@ inline Vec3 face_vertex_average(const PolyMesh& mesh, Index f) {
 }
 
 // The faces that are not fanned, with their triangles as loop positions in the face's own
-// orientation.
+// orientation. A face is fanned even where the fan folds in projection when the ear
+// clipping crosses itself in space; `folded` marks a face whose fan crosses itself too (a
+// polygon folded over itself: no cell on it is valid).
 struct FaceSplits {
   std::vector<Index> offsets;  // per face, into triangles; empty for a fanned face or a triangle
   std::vector<std::array<int, 3>> triangles;
+  std::vector<char> folded;  // per face
   bool fanned(const PolyMesh& mesh, Index f) const {
     return offsets[f] == offsets[f + 1] && mesh.face(f).size() > 3;
   }
@@ -91,6 +95,24 @@ void for_each_sub_tetrahedron(const PolyMesh& mesh, const FaceSplits& splits,
     }
   }
 }
+
+// The lowest-order virtual element (Beirão da Veiga et al., 2013) of a cell with no star
+// centre: u_h harmonic inside, linear on each face triangle above. The space needs of it the
+// projection Π onto linear functions, Πφ_i(x) = 1/n + g_i·(x − vertex_average) with
+// g_i = (1/|E|) ∫_∂E φ_i n for each of the cell's n distinct vertices; ∫_∂E is exact on the
+// face triangles, so Π reproduces every linear function and the patch test holds.
+struct VirtualElement {
+  double volume = 0.0;
+  Vec3 centroid, vertex_average;
+  std::vector<Vec3> gradient;  // g_i, in the order of `vertices`
+};
+
+// The virtual element of cell c; `vertices` are its distinct vertices, sorted. Empty when the
+// volume is not positive or a face is folded (FaceSplits): an inverted or folded cell, which
+// no space can take.
+std::optional<VirtualElement> virtual_element(const PolyMesh& mesh, const FaceSplits& splits,
+                                              std::span<const Index> faces, Index c,
+                                              std::span<const Index> vertices);
 
 // A point from which every face triangle of cell c is seen from inside, each sub-tetrahedron
 // with a volume above 1e-12 of its longest edge cubed: the vertex average when it does, else
