@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // The pipeline's mesher and the methods the study compares.
-const std::string kPipelineMethod = "staircase";
+const std::string kPipelineMethod = "cutcell";
 const std::vector<std::string> kStudyMethods{"staircase", "cutcell"};
 constexpr Index kParts = 4;
 

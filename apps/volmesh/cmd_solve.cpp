@@ -42,6 +42,9 @@ struct Input {
   std::unique_ptr<Domain> domain;
   std::string domain_name;
   double h = 0.0;  // 0 for a mesh read from a file
+  // The mesh is its own domain: its boundary points are on the true boundary already (a
+  // projection along normals could leave a point at a sharp edge for another surface).
+  bool own_boundary = false;
 };
 
 Input read_input(const SolveOptions& opt) {
@@ -55,6 +58,7 @@ Input read_input(const SolveOptions& opt) {
                        ")");
     in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
     in.domain_name = opt.domain.empty() ? opt.mesh : domain_display_name(opt.domain);
+    in.own_boundary = opt.domain.empty();
     return in;
   }
   const std::string spec = opt.domain.empty() ? default_domain(opt.method) : opt.domain;
@@ -92,13 +96,14 @@ int run_solve(const SolveOptions& opt) {
   // boundary tag without a condition, a cell the space refuses) names the file.
   try {
     if (elasticity) {
-      const fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+      fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+      if (in.own_boundary) problem.to_true_boundary = nullptr;
       const fem::VectorSolution s = solve_vector(in.mesh, problem, space);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       fields = vector_fields(in.mesh, s, problem);
     } else {
-      const fem::PoissonProblem problem =
-          poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+      fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+      if (in.own_boundary) problem.to_true_boundary = nullptr;
       if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
       const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space);
       dofs = s.dofs, report = s.solve, errors = s.errors;

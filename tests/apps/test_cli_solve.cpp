@@ -73,6 +73,25 @@ TEST(CliSolve, UserLinearSolutionIsReproducedOnHexesAndFromAMeshFile) {
   EXPECT_LT(test::meshio_fields(out)["point_data"]["error"]["max_abs"].get<double>(), 1e-10);
 }
 
+// builtin:primitives at level 5: cut cells at junctions of three surfaces, two of them with
+// no star centre (virtual elements), and boundary points on sharp edges, where the mesh's
+// own boundary is the true one. A linear field is reproduced to the solver's tolerance.
+TEST(CliSolve, LinearSolutionIsReproducedOnMultiMaterialCutCells) {
+  const fs::path dir = test::scratch_dir("solve-primitives");
+  const fs::path mesh = dir / "primitives.vtu", out = dir / "u.vtu";
+  const auto m = run_volmesh(
+      "mesh cutcell builtin:primitives --level 5 -o " + mesh.string(), dir);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const auto r = run_volmesh("solve poisson --exact '1+2*x-y+3*z' --mesh " + mesh.string() +
+                                 " -o " + out.string() + " --json",
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["space"], "polyhedral");
+  EXPECT_LT(j["errors"]["linf"].get<double>(), 1e-7);
+  EXPECT_LT(j["errors"]["h1"].get<double>(), 1e-7);
+}
+
 TEST(CliSolve, ElasticityWritesDisplacementErrorAndVonMises) {
   const fs::path dir = test::scratch_dir("solve-elastic");
   const fs::path out = dir / "patch.vtu";
