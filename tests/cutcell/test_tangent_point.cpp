@@ -2,7 +2,10 @@
 // Kobbelt/EMC sharp-feature test.
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "volmesh/cutcell/tangent_point.hpp"
 
@@ -30,6 +33,31 @@ TEST(TangentPoint, NearlyParallelPlanesAreTruncated) {
   const std::vector<Vec3> s{{0, 0, 0}, {0, 0, 0.01}};
   const std::vector<Vec3> n{Vec3(0, 0.001, 1).normalized(), Vec3(0, -0.001, 1).normalized()};
   EXPECT_LT(tangent_intersection(s, n).norm(), 0.02);
+}
+
+TEST(TangentPoint, TheFirstPointsKeepTheirPlaneExactly) {
+  // The plane x = 1 (the domain's boundary, two points) and three planes of a curved
+  // interior interface that disagree on x: all fitted together miss x = 1.
+  const std::vector<Vec3> s{{1, 0, 0}, {1, 0.5, 0.2}, {0.9, 0.1, 0.3}, {0.8, 0.2, 0.35}, {0.95, 0.3, 0.1}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitX(), Vec3(0.5, 0, 1).normalized(),
+                            Vec3(-0.5, 0, 1).normalized(), Vec3(0, 1, 0.2).normalized()};
+  const std::vector<std::uint8_t> first{1, 1, 0, 0, 0};
+  EXPECT_GT(std::abs(tangent_intersection(s, n).x() - 1.0), 1e-3);
+  const Vec3 p = tangent_intersection_first(s, n, first);
+  EXPECT_NEAR(p.x(), 1.0, 1e-14);
+  // In the plane x = 1 the other planes' least-squares point: n_y y + n_z z = n.s - n_x.
+  Eigen::Matrix<double, 3, 2> a;
+  Vec3 b;
+  for (int k = 0; k < 3; ++k) {
+    a.row(k) << n[k + 2].y(), n[k + 2].z();
+    b[k] = n[k + 2].dot(s[k + 2]) - n[k + 2].x();
+  }
+  const Eigen::Vector2d yz = a.colPivHouseholderQr().solve(b);
+  EXPECT_NEAR(p.y(), yz[0], 1e-12);
+  EXPECT_NEAR(p.z(), yz[1], 1e-12);
+  // No first points: the plain fit.
+  const std::vector<std::uint8_t> none(s.size(), 0);
+  EXPECT_LT((tangent_intersection_first(s, n, none) - tangent_intersection(s, n)).norm(), 1e-14);
 }
 
 TEST(SharpFeature, SmoothNormalsHaveNone) {

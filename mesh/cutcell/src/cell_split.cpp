@@ -77,7 +77,9 @@ class Splitter {
     return clamp_into_cell(in_.corners, p, options_.margin * size_, reach * size_);
   }
   void build_loops();
+  std::optional<Vec3> fitted_cell_point() const;
   int cell_point(const std::vector<int>& face_points);
+  bool junction_bends(const std::vector<int>& face_points) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
   // Puts back the first candidates moved into `triangles`.
@@ -112,27 +114,63 @@ class Splitter {
   CellSplit out_;
 };
 
+// The least-squares junction point of the cell's edge points (those on the domain's boundary
+// fitted first), inside the cell; nullopt when it lies beyond reach.
+std::optional<Vec3> Splitter::fitted_cell_point() const {
+  // Edge points on the domain's boundary: an end of a contour segment beside region 0.
+  std::vector<std::uint8_t> on_boundary(in_.points.size(), 0);
+  for (const CellSegment& g : in_.segments)
+    if (g.left == 0 || g.right == 0) on_boundary[g.a] = on_boundary[g.b] = 1;
+  std::vector<Vec3> s, n;
+  std::vector<std::uint8_t> boundary;
+  for (std::size_t i = 0; i < in_.points.size(); ++i)
+    if (const CellPoint& q = in_.points[i]; q.kind == CellPointKind::edge && !q.normal.isZero()) {
+      s.push_back(q.position);
+      n.push_back(q.normal);
+      boundary.push_back(on_boundary[i]);
+    }
+  if (s.empty()) return std::nullopt;
+  return clamp_into_cell(in_.corners, tangent_intersection_first(s, n, boundary, 3),
+                         options_.junction_margin * size_, options_.reach * size_);
+}
+
 int Splitter::cell_point(const std::vector<int>& face_points) {
   Vec3 p;
-  if (options_.exact_points) {
-    std::vector<Vec3> s, n;
-    for (const CellPoint& q : in_.points)
-      if (q.kind == CellPointKind::edge && !q.normal.isZero()) {
-        s.push_back(q.position);
-        n.push_back(q.normal);
-      }
-    if (const auto q = clamp(tangent_intersection(s, n, 3), options_.reach)) {
-      p = *q;
-    } else {
-      out_.cell_point_left_cell = true;
-      p = Vec3::Zero();
-      for (int f : face_points) p += position_[f] / static_cast<double>(face_points.size());
-    }
-  } else {
+  if (!options_.exact_points) {
     p = Vec3::Zero();
     for (const Vec3& c : in_.corners) p += c / 8.0;
+  } else if (const auto q = fitted_cell_point()) {
+    p = *q;
+  } else {
+    out_.cell_point_left_cell = true;
+    p = Vec3::Zero();
+    for (int f : face_points) p += position_[f] / static_cast<double>(face_points.size());
   }
   return add_point(p);
+}
+
+// Two face interface points are joined by their link unless the junction bends inside the
+// cell: where it meets a sharp edge of the domain's boundary (a layer ending on the box's
+// edge), the link would cut the edge off; the junction point there is the cell point.
+bool Splitter::junction_bends(const std::vector<int>& face_points) const {
+  if (!options_.exact_points || face_points.size() != 2) return false;
+  std::vector<Vec3> normals;
+  for (const CellSegment& g : in_.segments)
+    if (g.left == 0 || g.right == 0)
+      for (const int i : {g.a, g.b})
+        if (in_.points[i].kind == CellPointKind::edge && !in_.points[i].normal.isZero())
+          normals.push_back(in_.points[i].normal);
+  bool sharp = false;
+  for (std::size_t i = 0; i < normals.size() && !sharp; ++i)
+    for (std::size_t j = i + 1; j < normals.size() && !sharp; ++j)
+      sharp = normals[i].dot(normals[j]) < options_.feature.theta;
+  if (!sharp) return false;
+  const auto p = fitted_cell_point();
+  if (!p) return false;
+  const Vec3 &a = position_[face_points[0]], &b = position_[face_points[1]];
+  const Vec3 ab = b - a;
+  const double t = std::clamp((*p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (*p - (a + t * ab)).norm() > options_.bend * size_;
 }
 
 // Components per pair of regions: cycles of surface segments, and paths between face
@@ -151,7 +189,7 @@ void Splitter::build_loops() {
     if (in_.points[i].is_face_interface()) face_points.push_back(i);
   const int nif = static_cast<int>(face_points.size());
   int centre = -1;
-  if (nif > 2) centre = cell_point(face_points);
+  if (nif > 2 || junction_bends(face_points)) centre = cell_point(face_points);
 
   // Segments by (pair, start point), sorted for lookup.
   using Key = std::tuple<Index, Index, int>;

@@ -89,6 +89,12 @@ void find_edge_points(Grid& grid);
 // also covers an edge of a larger leaf whose midpoint lies in another region).
 std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);
 
+// Cut leaves below max_level with a transition face whose centre vertex an interface passes
+// within clearance * size of, along the leaf's edge direction into the leaf: no edge of the
+// leaf runs there, so the vertex moves do not see it and the piece between would be a
+// sliver. Split, the vertex becomes a corner of edges that the moves clear.
+std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance);
+
 // Past the deepest level a leaf edge may still change region twice (a layer thinner than
 // the cell): its midpoint vertex takes the region of the edge's lower corner, so that every
 // side of a face holds at most one interface point. Returns the number of vertices relabelled.

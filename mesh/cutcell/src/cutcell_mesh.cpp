@@ -70,6 +70,14 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
       ++st.refinement_passes;
       continue;
     }
+    if (settings.exact && options.vertex_clearance > 0.0)
+      if (const std::vector<Index> split =
+              leaves_thin_at_face_centres(grid, crossing_level, options.vertex_clearance);
+          !split.empty()) {
+        split_leaves(tree, split);
+        ++st.refinement_passes;
+        continue;
+      }
     st.relabelled_vertices = relabel_midpoints(grid);
     if (settings.exact && options.vertex_clearance > 0.0) {
       const auto [moved, unresolved] = move_vertices(grid, options.vertex_clearance);

@@ -158,11 +158,13 @@ void Contourer::star() {
   int centre = face_point_index();
   if (options_.exact_points) {
     std::vector<Vec3> s, m;
+    std::vector<std::uint8_t> boundary;  // on the domain's boundary (region 0 on one side)
     for (int i : crossing_) {
       s.push_back(at(i).position);
       m.push_back(projected_normal(i));
+      boundary.push_back(region_before(i) == 0 || region_after(i) == 0);
     }
-    const Vec3 p = tangent_intersection(s, m, 2);
+    const Vec3 p = tangent_intersection_first(s, m, boundary, 2);
     const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
     const int side_point = nearest_side_point(p);
     if (depth_inside(frame_, p) >= margin) {

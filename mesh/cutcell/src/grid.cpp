@@ -162,6 +162,40 @@ std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level) {
   return out;
 }
 
+std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance) {
+  const Octree& tree = *grid.tree;
+  const OctreeVertices& v = grid.vertices;
+  // Per leaf, a segment from the centre of each transition face into the leaf, one edge long.
+  std::vector<Index> owner;
+  std::vector<Vec3> from, to;
+  for (Index i = 0; i < tree.num_leaves(); ++i) {
+    const OctreeLeaf& l = tree.leaf(i);
+    if (!grid.cut[i] || l.level >= max_level || l.size() < 2) continue;
+    for (int f = 0; f < 6; ++f) {
+      GridPoint c = l.centre();
+      c[f / 2] = l.anchor[f / 2] + (f & 1) * l.size();
+      if (const Index centre = v.find(c); centre != kNoIndex) {
+        owner.push_back(i);
+        from.push_back(v.points[centre]);
+        to.push_back(v.points[centre] + (f & 1 ? -1.0 : 1.0) * grid.leaf_size(i) * Vec3::Unit(f / 2));
+      }
+    }
+  }
+  std::vector<std::vector<Crossing>> hits;
+  grid.domain->crossings(from, to, hits);
+  std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
+  for (std::size_t k = 0; k < owner.size(); ++k)
+    for (const Crossing& c : hits[k])
+      if (c.before != c.after) {
+        if (c.t < clearance) flag[owner[k]] = 1;
+        break;
+      }
+  std::vector<Index> out;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (flag[i]) out.push_back(i);
+  return out;
+}
+
 Index relabel_midpoints(Grid& grid) {
   const OctreeVertices& v = grid.vertices;
   Index relabelled = 0;

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace volmesh::cutcell {
@@ -36,6 +37,43 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
     if (sigma[k] <= cutoff) break;
     const Vec3 v = eigen.eigenvectors().col(k);
     x += v * (v.dot(atb) / sigma[k]);
+  }
+  return mass + x;
+}
+
+Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                std::span<const std::uint8_t> first, int max_rank, double relative_cutoff) {
+  Vec3 mass = Vec3::Zero();
+  for (const Vec3& s : points) mass += s;
+  mass /= static_cast<double>(points.size());
+  std::array<Eigen::Matrix3d, 2> ata{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  std::array<Vec3, 2> atb{Vec3::Zero(), Vec3::Zero()};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& n = normals[i];
+    const int k = first[i] ? 0 : 1;
+    ata[k] += n * n.transpose();
+    atb[k] += n * n.dot(points[i] - mass);
+  }
+  // The first set's truncated solution, then the second's within the directions it leaves
+  // free (the projector `free` removes the first set's kept directions).
+  Vec3 x = Vec3::Zero();
+  Eigen::Matrix3d free = Eigen::Matrix3d::Identity();
+  int rank = 0;
+  for (int k = 0; k < 2 && rank < max_rank; ++k) {
+    const Eigen::Matrix3d a = free * ata[k] * free;
+    const Vec3 b = free * (atb[k] - ata[k] * x);
+    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ata[k], Eigen::EigenvaluesOnly).eigenvalues()[2];
+    if (!(largest > 0.0)) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a);
+    const double cutoff = relative_cutoff * relative_cutoff * largest;
+    for (int j = 2; j >= 0 && rank < max_rank; --j) {
+      const double sigma = eigen.eigenvalues()[j];
+      if (sigma <= cutoff) break;
+      const Vec3 v = eigen.eigenvectors().col(j);
+      x += v * (v.dot(b) / sigma);
+      free -= v * v.transpose();
+      ++rank;
+    }
   }
   return mass + x;
 }

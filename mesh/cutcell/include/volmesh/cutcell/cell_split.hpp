@@ -60,6 +60,14 @@ struct CellOptions {
   // A feature point within snap * size of a face point of its component (the feature runs
   // along the face) is that face point.
   double snap = 0.15;
+  // The cell interface point keeps junction_margin * size away from the faces: a junction
+  // running just inside a face (sphere and cylinder meeting 0.01 h below a grid plane)
+  // would otherwise leave slivers between it and the face that no merge repairs. The
+  // vertex clearance does the same for interfaces near vertices.
+  double junction_margin = 0.1;
+  // Two face interface points are joined through the cell interface point instead of their
+  // link when the least-squares junction point lies farther than bend * size from the link.
+  double bend = 0.05;
   // Components without feature or cell point and with at least this many points are fanned
   // around their least-squares surface point; smaller ones use divide and conquer.
   int fan_points = 5;

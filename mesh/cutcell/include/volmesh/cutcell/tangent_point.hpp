@@ -6,6 +6,7 @@
 // direction the normals do not constrain leaves p at the mass point (EMC, Kobbelt et al.).
 // In a face, the normals projected on the face plane give the intersection of the tangent
 // lines; it stays in the plane of the s_i.
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -21,6 +22,14 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
 // origin's coordinates.
 Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
                           const Vec3& origin, int max_rank = 3, double relative_cutoff = 0.1);
+
+// The same with the points marked `first` fitted first: the directions their normals
+// constrain are theirs alone, the other points fit the directions left free. A junction with
+// the domain's boundary stays on the boundary's tangent planes (exactly on a planar face or
+// edge) whatever the interior interfaces meeting it do.
+Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                std::span<const std::uint8_t> first, int max_rank = 3,
+                                double relative_cutoff = 0.1);
 
 // The Kobbelt/EMC feature test on one contour component: theta = min n_i . n_j; a sharp
 // feature when theta < theta_s. With n* = n0 x n1 for the pair of least dot product,
