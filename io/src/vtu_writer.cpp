@@ -175,10 +175,12 @@ void write_vtu(const PolyMesh& mesh, const fs::path& path, const MeshFields& fie
   writer->SetFileName(output.temporary().c_str());
   writer->SetInputData(grid);
   // Raw appended binary, zlib-compressed, 64-bit headers and ids: compact, exact and
-  // readable by ParaView and meshio.
+  // readable by ParaView and meshio. zlib's fastest level: VTK's default (5) spent a fifth
+  // of a whole cut-cell run compressing, for files only about 10% smaller.
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
+  writer->SetCompressionLevel(1);
   writer->SetHeaderTypeToUInt64();
   writer->SetIdTypeToInt64();
   if (writer->Write() != 1 || !errors.first().empty())

@@ -81,29 +81,43 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
     i += group ? 8 : 1;
   }
   auto is_group = [&](std::size_t u) { return unit_entry[u + 1] - unit_entry[u] == 27; };
-  // (code, entry) pairs sorted by code: equal codes are one vertex.
+  // (code, entry) pairs sorted by code: equal codes are one vertex. Above kWeightShift each
+  // entry holds the number of the unit's leaves the point is a corner of.
+  constexpr int kWeightShift = 60;
+  constexpr std::uint64_t kEntry = (std::uint64_t{1} << kWeightShift) - 1;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> entries(unit_entry.back());
   tbb::parallel_for(std::size_t{0}, unit_leaf.size(), [&](std::size_t u) {
     const OctreeLeaf& l = tree.leaf(unit_leaf[u]);
     const std::size_t e0 = unit_entry[u];
     if (!is_group(u)) {
-      for (int k = 0; k < 8; ++k) entries[e0 + k] = {morton_encode(l.corner(k)), e0 + k};
+      for (int k = 0; k < 8; ++k)
+        entries[e0 + k] = {morton_encode(l.corner(k)),
+                           (e0 + k) | std::uint64_t{1} << kWeightShift};
       return;
     }
     const std::uint32_t s = l.size();
-    for (std::uint32_t p = 0; p < 27; ++p)
+    for (std::uint32_t p = 0; p < 27; ++p) {
+      // A point in the middle of the group along an axis is a corner of both children there.
+      const int middle = (p % 3 == 1) + (p / 3 % 3 == 1) + (p / 9 == 1);
+      const std::uint64_t weight = std::uint64_t{1} << middle;
       entries[e0 + p] = {morton_encode({l.anchor[0] + p % 3 * s, l.anchor[1] + p / 3 % 3 * s,
                                         l.anchor[2] + p / 9 * s}),
-                         e0 + p};
+                         (e0 + p) | weight << kWeightShift};
+    }
   });
   // Equal codes may come in any order: each gets the same vertex id.
   tbb::parallel_sort(entries.begin(), entries.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::uint64_t> codes;
+  std::vector<std::uint8_t> corner_of;  // per vertex: the number of leaves it is a corner of
   std::vector<Index> vertex_of(entries.size());
   for (const auto& [code, entry] : entries) {
-    if (codes.empty() || codes.back() != code) codes.push_back(code);
-    vertex_of[entry] = static_cast<Index>(codes.size() - 1);
+    if (codes.empty() || codes.back() != code) {
+      codes.push_back(code);
+      corner_of.push_back(0);
+    }
+    corner_of.back() += static_cast<std::uint8_t>(entry >> kWeightShift);
+    vertex_of[entry & kEntry] = static_cast<Index>(codes.size() - 1);
   }
   entries = {};
   OctreeVertices v;
@@ -140,9 +154,13 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
   none.fill(kNoIndex);
   v.leaf_edge_mid.assign(n, none);
   v.hanging.assign(nv, 0);
-  // Each (leaf, edge) has one midpoint, so no two vertices write the same entry.
+  // Each (leaf, edge) has one midpoint, so no two vertices write the same entry. A vertex
+  // that is a corner of every leaf around it (of 2^k, k its coordinates inside the root)
+  // lies inside no leaf's edge or face: only the others are looked at.
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
-    classify_vertex(tree, static_cast<Index>(i), v.coords[i], v);
+    int around = 1;
+    for (const std::uint32_t x : v.coords[i]) around <<= (x != 0 && x != kOctreeGrid);
+    if (corner_of[i] < around) classify_vertex(tree, static_cast<Index>(i), v.coords[i], v);
   });
   return v;
 }
