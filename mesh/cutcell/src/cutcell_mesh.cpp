@@ -65,19 +65,18 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     progress("interface points", 0.2);
     grid = make_grid(tree, domain, settings);
     find_edge_points(grid);
-    if (const std::vector<Index> split = leaves_crossed_twice(grid, crossing_level); !split.empty()) {
+    // Both rules in one pass: each pass rebuilds the whole grid.
+    std::vector<Index> split = leaves_crossed_twice(grid, crossing_level);
+    if (settings.exact && options.vertex_clearance > 0.0) {
+      const std::vector<Index> thin =
+          leaves_thin_at_face_centres(grid, crossing_level, options.vertex_clearance);
+      split.insert(split.end(), thin.begin(), thin.end());
+    }
+    if (!split.empty()) {
       split_leaves(tree, split);
       ++st.refinement_passes;
       continue;
     }
-    if (settings.exact && options.vertex_clearance > 0.0)
-      if (const std::vector<Index> split =
-              leaves_thin_at_face_centres(grid, crossing_level, options.vertex_clearance);
-          !split.empty()) {
-        split_leaves(tree, split);
-        ++st.refinement_passes;
-        continue;
-      }
     st.relabelled_vertices = relabel_midpoints(grid);
     if (settings.exact && options.vertex_clearance > 0.0) {
       const auto [moved, unresolved] = move_vertices(grid, options.vertex_clearance);
