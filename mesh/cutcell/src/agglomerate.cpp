@@ -82,6 +82,7 @@ class Agglomerator {
   std::vector<std::vector<Index>> faces_of_;
   std::vector<char> face_alive_, cell_alive_;
   std::vector<std::vector<Index>> loops_;  // faces joined by join_faces grow
+  std::vector<Index> changed_;  // cells whose centre or faces changed since the last round
 };
 
 // max(skewness / limit, non-orthogonality / limit), or kInverted and more when a centre lies
@@ -215,6 +216,7 @@ void Agglomerator::merge_groups(std::span<const Group> groups) {
     for (Index c : cells_of(g))
       if (c != into) merge(c, into);
     cell_[into] = union_geometry(std::span<const Index>(&into, 1));
+    changed_.push_back(into);
   }
 }
 
@@ -283,6 +285,7 @@ bool Agglomerator::join_faces(Index f) {
       if (c != kNoIndex) {
         std::erase(faces_of_[c], best_g);
         cell_[c] = union_geometry(std::span<const Index>(&c, 1));
+        changed_.push_back(c);
       }
     joined = true;
   }
@@ -341,13 +344,17 @@ void Agglomerator::rebuild() {
 AgglomerationStats Agglomerator::run() {
   AgglomerationStats stats;
   const Index nc = mesh_.num_cells(), nf = mesh_.num_faces();
+  // Face scores, kept up to date around the cells each round changes: rescoring every face
+  // each round took a fifth of a layers6 run.
+  std::vector<double> scores(nf, 0.0);
+  for (Index f = 0; f < nf; ++f) scores[f] = face_score(f);
   for (int round = 0; round < options_.rounds; ++round) {
     // The cells beside a face beyond the limits, worst first, then the tiny cells.
     std::vector<std::pair<double, Index>> bad;
     std::vector<Index> rejected;
     for (Index f = 0; f < nf; ++f) {
       if (!face_alive_[f]) continue;
-      const double s = face_score(f);
+      const double s = scores[f];
       if (s <= 1.0) continue;
       rejected.push_back(f);
       bad.emplace_back(s, mesh_.owner[f]);
@@ -368,6 +375,10 @@ AgglomerationStats Agglomerator::run() {
     stats.merged += merged;
     stats.joined += joined;
     if (merged == 0 && joined == 0) break;
+    for (Index c : changed_)
+      if (cell_alive_[c])
+        for (Index f : faces_of_[c]) scores[f] = face_score(f);
+    changed_.clear();
   }
   for (Index f = 0; f < nf; ++f) stats.bad_faces += face_alive_[f] && face_score(f) > 1.0;
   if (stats.merged > 0 || stats.joined > 0) rebuild();
