@@ -85,8 +85,6 @@ class PolyhedralSpace final : public FeSpace {
 
   int internal_nodes() const override { return 1; }
 
-  Index virtual_cells() const { return static_cast<Index>(virtual_.size()); }
-
   void cell_points(Index c, Rule rule, CellPoints& out) const override {
     out.clear();
     if (virtual_of_[c] != kNoIndex) return virtual_points(virtual_[virtual_of_[c]], c, rule, out);
@@ -243,8 +241,8 @@ class PolyhedralSpace final : public FeSpace {
             static_cast<std::size_t>(vertex_offsets_[c + 1] - vertex_offsets_[c])};
   }
 
-  // The message for a cell neither star-shaped nor a valid virtual element, with its volume
-  // as its face triangles give it.
+  // The message for a cell neither star-shaped nor a valid virtual element: its volume as
+  // its face triangles give it, and its first folded face.
   [[noreturn]] void throw_folded(Index c) const {
     const std::span<const Index> vertices = cell_vertices(c);
     Vec3 average = Vec3::Zero();
@@ -254,8 +252,12 @@ class PolyhedralSpace final : public FeSpace {
       volume += tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
     });
     std::ostringstream message;
-    message << "mesh: cell " << c << ": inverted, degenerate or folded: volume " << volume
-            << (volume > 0.0 ? ", and a face folds over itself" : "");
+    message << "mesh: cell " << c << ": inverted, degenerate or folded: volume " << volume;
+    for (Index f : cell_faces_.of(c))
+      if (splits_.folded[f]) {
+        message << ", face " << f << " folds over itself";
+        break;
+      }
     throw InputError(message.str());
   }
 

@@ -78,8 +78,9 @@ class Splitter {
   }
   void build_loops();
   std::optional<Vec3> fitted_cell_point() const;
-  int cell_point(const std::vector<int>& face_points);
-  bool junction_bends(const std::vector<int>& face_points) const;
+  int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted);
+  bool boundary_edge_is_sharp() const;
+  bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
   // Puts back the first candidates moved into `triangles`.
@@ -134,13 +135,14 @@ std::optional<Vec3> Splitter::fitted_cell_point() const {
                          options_.junction_margin * size_, options_.reach * size_);
 }
 
-int Splitter::cell_point(const std::vector<int>& face_points) {
+// `fitted`: fitted_cell_point() with exact points.
+int Splitter::cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted) {
   Vec3 p;
   if (!options_.exact_points) {
     p = Vec3::Zero();
     for (const Vec3& c : in_.corners) p += c / 8.0;
-  } else if (const auto q = fitted_cell_point()) {
-    p = *q;
+  } else if (fitted) {
+    p = *fitted;
   } else {
     out_.cell_point_left_cell = true;
     p = Vec3::Zero();
@@ -149,28 +151,28 @@ int Splitter::cell_point(const std::vector<int>& face_points) {
   return add_point(p);
 }
 
-// Two face interface points are joined by their link unless the junction bends inside the
-// cell: where it meets a sharp edge of the domain's boundary (a layer ending on the box's
-// edge), the link would cut the edge off; the junction point there is the cell point.
-bool Splitter::junction_bends(const std::vector<int>& face_points) const {
-  if (!options_.exact_points || face_points.size() != 2) return false;
+// Whether the normals at the cell's edge points on the domain's boundary show a sharp edge.
+bool Splitter::boundary_edge_is_sharp() const {
   std::vector<Vec3> normals;
   for (const CellSegment& g : in_.segments)
     if (g.left == 0 || g.right == 0)
       for (const int i : {g.a, g.b})
         if (in_.points[i].kind == CellPointKind::edge && !in_.points[i].normal.isZero())
           normals.push_back(in_.points[i].normal);
-  bool sharp = false;
-  for (std::size_t i = 0; i < normals.size() && !sharp; ++i)
-    for (std::size_t j = i + 1; j < normals.size() && !sharp; ++j)
-      sharp = normals[i].dot(normals[j]) < options_.feature.theta;
-  if (!sharp) return false;
-  const auto p = fitted_cell_point();
-  if (!p) return false;
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    for (std::size_t j = i + 1; j < normals.size(); ++j)
+      if (normals[i].dot(normals[j]) < options_.feature.theta) return true;
+  return false;
+}
+
+// Two face interface points are joined by their link unless the junction bends inside the
+// cell: where it meets a sharp edge of the domain's boundary (a layer ending on the box's
+// edge), the link would cut the edge off; the junction point there is the cell point.
+bool Splitter::junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const {
   const Vec3 &a = position_[face_points[0]], &b = position_[face_points[1]];
   const Vec3 ab = b - a;
-  const double t = std::clamp((*p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-  return (*p - (a + t * ab)).norm() > options_.bend * size_;
+  const double t = std::clamp((fitted - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (fitted - (a + t * ab)).norm() > options_.bend * size_;
 }
 
 // Components per pair of regions: cycles of surface segments, and paths between face
@@ -189,7 +191,13 @@ void Splitter::build_loops() {
     if (in_.points[i].is_face_interface()) face_points.push_back(i);
   const int nif = static_cast<int>(face_points.size());
   int centre = -1;
-  if (nif > 2 || junction_bends(face_points)) centre = cell_point(face_points);
+  const bool may_bend = nif == 2 && options_.exact_points && boundary_edge_is_sharp();
+  if (nif > 2 || may_bend) {
+    const std::optional<Vec3> fitted =
+        options_.exact_points ? fitted_cell_point() : std::optional<Vec3>();
+    if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
+      centre = cell_point(face_points, fitted);
+  }
 
   // Segments by (pair, start point), sorted for lookup.
   using Key = std::tuple<Index, Index, int>;
