@@ -9,6 +9,8 @@ std::optional<VirtualElement> virtual_element(const PolyMesh& mesh, const FaceSp
                                               std::span<const Index> vertices) {
   const std::size_t n = vertices.size();
   if (n < 4) return std::nullopt;
+  for (Index f : faces)
+    if (splits.folded[f]) return std::nullopt;
   VirtualElement e;
   e.vertex_average = Vec3::Zero();
   for (Index v : vertices) e.vertex_average += mesh.points[v] / static_cast<double>(n);
@@ -37,8 +39,6 @@ std::optional<VirtualElement> virtual_element(const PolyMesh& mesh, const FaceSp
   });
   // A cell thinner than 1e-12 of its size is as degenerate as a flat sub-tetrahedron.
   if (!(e.volume > 1e-12 * longest * longest * longest)) return std::nullopt;
-  for (Index f : faces)
-    if (splits.folded[f]) return std::nullopt;
   e.centroid = moment / e.volume;
   for (Vec3& g : e.gradient) g /= e.volume;
   return e;

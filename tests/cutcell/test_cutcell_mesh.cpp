@@ -31,7 +31,7 @@ TEST(CutcellMesh, BallIsValid) {
 // planes first, and a junction that meets a box edge inside a cell is joined through the
 // cell point (the link between its two face points would cut the edge off). Before, the
 // regions added up to 1 - 2.6e-3 (level 3) and 1 - 7.0e-5 (level 4); now 1 - 6.9e-5 and
-// 1 - 6.8e-8. The target, 1e-10, is not met yet.
+// 1 - 4.1e-8. The target, 1e-10, is not met yet.
 TEST(CutcellMesh, Layers6RegionsFillTheUnitBox) {
   const auto domain = make_builtin_domain("layers6");
   const std::array<double, 2> tolerance{1e-4, 2e-7};

@@ -4,21 +4,15 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <span>
 #include <utility>
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/cutcell/cell_split.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {
 namespace {
-
-// OpenFOAM's ROOTVSMALL in the skewness formula, as volmesh's quality report keeps it.
-constexpr double kRootVSmall = 1e-150;
-// Score of a face whose pyramid on either cell is inverted (a centre behind it): above every
-// skewness that a merge would trade it for.
-constexpr double kInverted = 1e3;
 
 class Agglomerator {
  public:
@@ -37,13 +31,16 @@ class Agglomerator {
     loops_.resize(mesh.num_faces());
     for (Index f = 0; f < mesh.num_faces(); ++f) loops_[f].assign(mesh.face(f).begin(), mesh.face(f).end());
     cell_alive_.assign(mesh.num_cells(), 1);
-    angle_limit_ = options.max_non_orthogonality * std::numbers::pi / 180.0;
+    limits_ = {options.skewness_limit, options.max_non_orthogonality};
   }
   AgglomerationStats run();
 
  private:
+  // checkMesh's verdict on a face (face_metrics.hpp): above 1 where it would complain.
   double score(const FaceGeometry& g, std::span<const Index> loop, const Vec3& owner,
-               const Vec3* neighbour) const;
+               const Vec3* neighbour) const {
+    return checkmesh_badness(g, mesh_.points, loop, owner, neighbour, limits_);
+  }
   double score(Index f, const Vec3& owner, const Vec3* neighbour) const {
     return score(face_[f], loops_[f], owner, neighbour);
   }
@@ -76,7 +73,7 @@ class Agglomerator {
   PolyMesh& mesh_;
   std::vector<double>& size_;
   const AgglomerationOptions& options_;
-  double angle_limit_ = 0.0;  // radians
+  CheckMeshLimits limits_;
   std::vector<FaceGeometry> face_;
   std::vector<CellGeometry> cell_;
   std::vector<std::vector<Index>> faces_of_;
@@ -84,41 +81,6 @@ class Agglomerator {
   std::vector<std::vector<Index>> loops_;  // faces joined by join_faces grow
   std::vector<Index> changed_;  // cells whose centre or faces changed since the last round
 };
-
-// max(skewness / limit, non-orthogonality / limit), or kInverted and more when a centre lies
-// behind the face (an inverted face pyramid): above 1 where checkMesh would complain. Skewness as primitiveMeshTools::faceSkewness and
-// boundaryFaceSkewness define it (volmesh's quality report computes the same).
-double Agglomerator::score(const FaceGeometry& g, std::span<const Index> loop, const Vec3& owner,
-                           const Vec3* neighbour) const {
-  const Vec3& s = g.area_vector;
-  const Vec3 cpf = g.centre - owner;
-  // Inverted: kInverted and more the farther a centre lies behind, so that a merge that
-  // moves it only part of the way back counts as progress.
-  double behind = s.dot(cpf) / (s.norm() * cpf.norm() + kRootVSmall);
-  if (neighbour) {
-    const Vec3 cnf = *neighbour - g.centre;
-    behind = std::min(behind, s.dot(cnf) / (s.norm() * cnf.norm() + kRootVSmall));
-  }
-  if (behind <= 0.0) return kInverted * (1.0 - behind);
-  Vec3 d;
-  double factor;
-  double worst = 0.0;
-  if (neighbour) {
-    d = *neighbour - owner;
-    factor = 0.2;
-    const double cosine = d.dot(s) / (d.norm() * s.norm() + kRootVSmall);
-    worst = std::acos(std::clamp(cosine, -1.0, 1.0)) / angle_limit_;
-  } else {
-    const Vec3 n = s / (s.norm() + kRootVSmall);
-    d = n * n.dot(cpf);
-    factor = 0.4;
-  }
-  const Vec3 sv = cpf - (s.dot(cpf) / (s.dot(d) + kRootVSmall)) * d;
-  const Vec3 sv_hat = sv / (sv.norm() + kRootVSmall);
-  double extent = factor * d.norm() + kRootVSmall;
-  for (Index v : loop) extent = std::max(extent, std::abs(sv_hat.dot(mesh_.points[v] - g.centre)));
-  return std::max(worst, sv.norm() / extent / options_.skewness_limit);
-}
 
 // Volume and centre of the union of the cells as checkMesh computes them
 // (primitiveMeshCellCentresAndVols): pyramids from the mean of the face centres to each

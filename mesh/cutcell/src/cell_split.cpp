@@ -1,6 +1,7 @@
 #include "volmesh/cutcell/cell_split.hpp"
 
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -77,9 +78,10 @@ class Splitter {
     return clamp_into_cell(in_.corners, p, options_.margin * size_, reach * size_);
   }
   void build_loops();
-  std::optional<Vec3> fitted_cell_point() const;
+  std::vector<std::uint8_t> boundary_edge_points() const;
+  std::optional<Vec3> fitted_cell_point(const std::vector<std::uint8_t>& on_boundary) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted);
-  bool boundary_edge_is_sharp() const;
+  bool boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_boundary) const;
   bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
@@ -115,13 +117,20 @@ class Splitter {
   CellSplit out_;
 };
 
+// Per input point: an edge point with a normal on the domain's boundary (an end of a contour
+// segment beside region 0).
+std::vector<std::uint8_t> Splitter::boundary_edge_points() const {
+  std::vector<std::uint8_t> out(in_.points.size(), 0);
+  for (const CellSegment& g : in_.segments)
+    if (g.left == 0 || g.right == 0)
+      for (const int i : {g.a, g.b})
+        out[i] = in_.points[i].kind == CellPointKind::edge && !in_.points[i].normal.isZero();
+  return out;
+}
+
 // The least-squares junction point of the cell's edge points (those on the domain's boundary
 // fitted first), inside the cell; nullopt when it lies beyond reach.
-std::optional<Vec3> Splitter::fitted_cell_point() const {
-  // Edge points on the domain's boundary: an end of a contour segment beside region 0.
-  std::vector<std::uint8_t> on_boundary(in_.points.size(), 0);
-  for (const CellSegment& g : in_.segments)
-    if (g.left == 0 || g.right == 0) on_boundary[g.a] = on_boundary[g.b] = 1;
+std::optional<Vec3> Splitter::fitted_cell_point(const std::vector<std::uint8_t>& on_boundary) const {
   std::vector<Vec3> s, n;
   std::vector<std::uint8_t> boundary;
   for (std::size_t i = 0; i < in_.points.size(); ++i)
@@ -152,13 +161,10 @@ int Splitter::cell_point(const std::vector<int>& face_points, const std::optiona
 }
 
 // Whether the normals at the cell's edge points on the domain's boundary show a sharp edge.
-bool Splitter::boundary_edge_is_sharp() const {
+bool Splitter::boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_boundary) const {
   std::vector<Vec3> normals;
-  for (const CellSegment& g : in_.segments)
-    if (g.left == 0 || g.right == 0)
-      for (const int i : {g.a, g.b})
-        if (in_.points[i].kind == CellPointKind::edge && !in_.points[i].normal.isZero())
-          normals.push_back(in_.points[i].normal);
+  for (std::size_t i = 0; i < in_.points.size(); ++i)
+    if (on_boundary[i]) normals.push_back(in_.points[i].normal);
   for (std::size_t i = 0; i < normals.size(); ++i)
     for (std::size_t j = i + 1; j < normals.size(); ++j)
       if (normals[i].dot(normals[j]) < options_.feature.theta) return true;
@@ -191,12 +197,15 @@ void Splitter::build_loops() {
     if (in_.points[i].is_face_interface()) face_points.push_back(i);
   const int nif = static_cast<int>(face_points.size());
   int centre = -1;
-  const bool may_bend = nif == 2 && options_.exact_points && boundary_edge_is_sharp();
-  if (nif > 2 || may_bend) {
-    const std::optional<Vec3> fitted =
-        options_.exact_points ? fitted_cell_point() : std::optional<Vec3>();
-    if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
-      centre = cell_point(face_points, fitted);
+  if (nif > 2 && !options_.exact_points) {
+    centre = cell_point(face_points, std::nullopt);
+  } else if (nif >= 2 && options_.exact_points) {
+    const std::vector<std::uint8_t> on_boundary = boundary_edge_points();
+    if (nif > 2 || boundary_edge_is_sharp(on_boundary)) {
+      const std::optional<Vec3> fitted = fitted_cell_point(on_boundary);
+      if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
+        centre = cell_point(face_points, fitted);
+    }
   }
 
   // Segments by (pair, start point), sorted for lookup.
@@ -441,44 +450,23 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
   return centre;
 }
 
-// How far a face between the pieces with these centres is from what checkMesh accepts: the
-// largest of its OpenFOAM skewness over the limit (primitiveMeshTools::faceSkewness and
-// boundaryFaceSkewness), its non-orthogonality over the limit, and kInverted when a centre
-// lies behind it (checkMesh's "incorrectly oriented" face pyramids). Above 1: rejected.
-// `outside` when the lower side is region 0 and the face a boundary face.
+// checkMesh's verdict on a face between the pieces with these centres (face_metrics.hpp):
+// above 1 it is rejected. `outside` when the lower side is region 0: a boundary face.
 double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
                          bool outside) const {
-  constexpr double kInverted = 1e3;
-  Vec3 centre, area;
+  FaceGeometry g;
   if (face.size() == 3) {
     const Vec3 &a = position_[face[0]], &b = position_[face[1]], &c = position_[face[2]];
-    centre = (a + b + c) / 3.0;
-    area = 0.5 * (b - a).cross(c - a);
+    g.centre = (a + b + c) / 3.0;
+    g.area_vector = 0.5 * (b - a).cross(c - a);
   } else {
-    const FaceGeometry g = polygon_geometry(position_, std::vector<Index>(face.begin(), face.end()));
-    centre = g.centre;
-    area = g.area_vector;
+    g = polygon_geometry(position_, std::vector<Index>(face.begin(), face.end()));
   }
-  if (area.dot(centre - owner) <= 0.0 || (!outside && area.dot(neighbour - centre) <= 0.0)) return kInverted;
-  Vec3 offset;
-  double scale, worst = 0.0;
-  if (outside) {
-    const Vec3 n = area.normalized();
-    const Vec3 along = n * n.dot(centre - owner);
-    offset = centre - owner - along;
-    scale = 0.4 * along.norm();
-  } else {
-    const Vec3 d = neighbour - owner;
-    const double denom = area.dot(d);
-    offset = centre - (owner + area.dot(centre - owner) / denom * d);
-    scale = 0.2 * d.norm();
-    worst = std::acos(std::clamp(denom / (area.norm() * d.norm()), -1.0, 1.0)) * (180.0 / std::acos(-1.0)) /
-            options_.max_non_orthogonality;
-  }
-  const double len = offset.norm();
-  if (len == 0.0) return worst;
-  for (int p : face) scale = std::max(scale, std::abs(offset.dot(position_[p] - centre)) / len);
-  return std::max(worst, len / scale / options_.skewness_limit);
+  // Every inverted face counts alike here (the merging grades them): the choice among
+  // triangulations stays as it was tuned.
+  return std::min(kInvertedFace,
+                  checkmesh_badness(g, position_, face, owner, outside ? nullptr : &neighbour,
+                                    {options_.skewness_limit, options_.max_non_orthogonality}));
 }
 
 // The last resort for a face still rejected: merged with a neighbouring face of its

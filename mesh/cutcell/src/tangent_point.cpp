@@ -7,64 +7,40 @@
 
 namespace volmesh::cutcell {
 
-Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
-                          int max_rank, double relative_cutoff) {
+namespace {
+
+Vec3 mass_point(std::span<const Vec3> points) {
   Vec3 mass = Vec3::Zero();
   for (const Vec3& s : points) mass += s;
-  return tangent_intersection(points, normals, Vec3(mass / static_cast<double>(points.size())),
-                              max_rank, relative_cutoff);
+  return mass / static_cast<double>(points.size());
 }
 
-Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
-                          const Vec3& origin, int max_rank, double relative_cutoff) {
-  const Vec3& mass = origin;
-  // Normal equations A^T A x = A^T b with x = p - mass: the eigen-decomposition of the
-  // symmetric A^T A is the SVD of A, and its truncated inverse A's pseudo-inverse.
-  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-  Vec3 atb = Vec3::Zero();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3& n = normals[i];
-    ata += n * n.transpose();
-    atb += n * n.dot(points[i] - mass);
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(ata);
-  // Eigenvalues ascending; they are the squared singular values of A.
-  const Vec3 sigma = eigen.eigenvalues();
-  if (!(sigma[2] > 0.0)) return mass;
-  const double cutoff = relative_cutoff * relative_cutoff * sigma[2];
-  Vec3 x = Vec3::Zero();
-  for (int k = 2; k > 2 - std::min(max_rank, 3); --k) {
-    if (sigma[k] <= cutoff) break;
-    const Vec3 v = eigen.eigenvectors().col(k);
-    x += v * (v.dot(atb) / sigma[k]);
-  }
-  return mass + x;
-}
-
-Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                std::span<const std::uint8_t> first, int max_rank, double relative_cutoff) {
-  Vec3 mass = Vec3::Zero();
-  for (const Vec3& s : points) mass += s;
-  mass /= static_cast<double>(points.size());
+// Normal equations A^T A x = A^T b with x = p - origin, per set of points (`first`: the
+// marked ones, then the others; empty: one set): the eigen-decomposition of the symmetric
+// A^T A is the SVD of A, and its truncated inverse A's pseudo-inverse. The second set solves
+// within the directions the first left free (the projector `free` removes those kept).
+Vec3 fit(std::span<const Vec3> points, std::span<const Vec3> normals,
+         std::span<const std::uint8_t> first, const Vec3& origin, int max_rank, double relative_cutoff) {
   std::array<Eigen::Matrix3d, 2> ata{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   std::array<Vec3, 2> atb{Vec3::Zero(), Vec3::Zero()};
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3& n = normals[i];
-    const int k = first[i] ? 0 : 1;
+    const int k = first.empty() || first[i] ? 0 : 1;
     ata[k] += n * n.transpose();
-    atb[k] += n * n.dot(points[i] - mass);
+    atb[k] += n * n.dot(points[i] - origin);
   }
-  // The first set's truncated solution, then the second's within the directions it leaves
-  // free (the projector `free` removes the first set's kept directions).
   Vec3 x = Vec3::Zero();
   Eigen::Matrix3d free = Eigen::Matrix3d::Identity();
   int rank = 0;
   for (int k = 0; k < 2 && rank < max_rank; ++k) {
-    const Eigen::Matrix3d a = free * ata[k] * free;
-    const Vec3 b = free * (atb[k] - ata[k] * x);
-    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ata[k], Eigen::EigenvaluesOnly).eigenvalues()[2];
+    // Eigenvalues ascending; they are the squared singular values of A. The cutoff is
+    // relative to the set's own largest one, before the projection.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(free * ata[k] * free);
+    const double largest =
+        rank == 0 ? eigen.eigenvalues()[2]
+                  : Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ata[k], Eigen::EigenvaluesOnly).eigenvalues()[2];
     if (!(largest > 0.0)) continue;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a);
+    const Vec3 b = free * (atb[k] - ata[k] * x);
     const double cutoff = relative_cutoff * relative_cutoff * largest;
     for (int j = 2; j >= 0 && rank < max_rank; --j) {
       const double sigma = eigen.eigenvalues()[j];
@@ -75,7 +51,24 @@ Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Ve
       ++rank;
     }
   }
-  return mass + x;
+  return origin + x;
+}
+
+}  // namespace
+
+Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
+                          int max_rank, double relative_cutoff) {
+  return fit(points, normals, {}, mass_point(points), max_rank, relative_cutoff);
+}
+
+Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
+                          const Vec3& origin, int max_rank, double relative_cutoff) {
+  return fit(points, normals, {}, origin, max_rank, relative_cutoff);
+}
+
+Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                std::span<const std::uint8_t> first, int max_rank, double relative_cutoff) {
+  return fit(points, normals, first, mass_point(points), max_rank, relative_cutoff);
 }
 
 std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<const Vec3> normals,

@@ -2,6 +2,8 @@
 // Finite-volume metrics of the faces of any PolyMesh, as OpenFOAM's checkMesh computes them
 // (primitiveMeshTools / polyMeshTools), from face and cell geometry computed once.
 // Each function returns one value per face.
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "volmesh/core/geometry.hpp"
@@ -24,6 +26,69 @@ std::vector<double> face_non_orthogonality(const PolyMesh& mesh, const MeshGeome
 // on boundary faces d is the owner's normal distance to the face and the factor 0.4.
 // checkMesh flags faces above 4.
 std::vector<double> face_skewness(const PolyMesh& mesh, const MeshGeometry& geometry);
+
+// One face at a time, for meshers that weigh alternatives before the mesh exists: the face's
+// centre and area vector, its vertices points[loop[k]], the cells' centres (no neighbour: a
+// boundary face).
+
+// OpenFOAM's ROOTVSMALL, kept in the formulas so that values match checkMesh's, including
+// its answers for zero-area faces and coincident centres.
+inline constexpr double kRootVSmall = 1e-150;
+
+// primitiveMeshTools::faceSkewness with d the owner → neighbour centre vector (factor 0.2),
+// or boundaryFaceSkewness with d the owner's normal distance to the face (factor 0.4: half
+// that to a mirror cell).
+template <class Points, class Loop>
+double face_skewness(const FaceGeometry& face, const Points& points, const Loop& loop,
+                     const Vec3& owner, const Vec3* neighbour) {
+  const Vec3 cpf = face.centre - owner;
+  const Vec3& s = face.area_vector;
+  Vec3 d;
+  double factor;
+  if (neighbour) {
+    d = *neighbour - owner;
+    factor = 0.2;
+  } else {
+    const Vec3 normal = s / (s.norm() + kRootVSmall);
+    d = normal * normal.dot(cpf);
+    factor = 0.4;
+  }
+  const Vec3 sv = cpf - (s.dot(cpf) / (s.dot(d) + kRootVSmall)) * d;
+  const Vec3 sv_hat = sv / (sv.norm() + kRootVSmall);
+  double extent = factor * d.norm() + kRootVSmall;
+  for (const auto v : loop) extent = std::max(extent, std::abs(sv_hat.dot(points[v] - face.centre)));
+  return sv.norm() / extent;
+}
+
+// Degrees between d and the area vector s. checkMesh takes acos of the normalised dot
+// product; atan2 gives the same angle without losing half the digits near 0°. A zero vector
+// gives 90°, as checkMesh's ROOTVSMALL guard makes it.
+double non_orthogonality_deg(const Vec3& d, const Vec3& s);
+
+// How far one face is from what checkMesh accepts: max(skewness / skewness limit,
+// non-orthogonality / its limit), above 1 where checkMesh flags the face; when a cell centre
+// lies behind the face (checkMesh's incorrectly oriented face pyramid) kInvertedFace and
+// more the farther behind, so that a change that moves it only part of the way back counts
+// as progress.
+struct CheckMeshLimits {
+  double skewness = 4.0;
+  double non_orthogonality = 88.0;  // degrees; checkMesh fails at 90
+};
+inline constexpr double kInvertedFace = 1e3;
+template <class Points, class Loop>
+double checkmesh_badness(const FaceGeometry& face, const Points& points, const Loop& loop,
+                         const Vec3& owner, const Vec3* neighbour, const CheckMeshLimits& limits) {
+  const Vec3& s = face.area_vector;
+  const Vec3 cpf = face.centre - owner;
+  double behind = s.dot(cpf) / (s.norm() * cpf.norm() + kRootVSmall);
+  if (neighbour) {
+    const Vec3 cnf = *neighbour - face.centre;
+    behind = std::min(behind, s.dot(cnf) / (s.norm() * cnf.norm() + kRootVSmall));
+  }
+  if (behind <= 0.0) return kInvertedFace * (1.0 - behind);
+  const double angle = neighbour ? non_orthogonality_deg(*neighbour - owner, s) / limits.non_orthogonality : 0.0;
+  return std::max(angle, face_skewness(face, points, loop, owner, neighbour) / limits.skewness);
+}
 
 // Larger / smaller |volume| of the two cells across each internal face (>= 1; +inf when a
 // cell has zero volume); NaN on boundary faces.
