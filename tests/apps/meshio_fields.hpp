@@ -12,7 +12,7 @@ namespace volmesh::test {
 
 inline nlohmann::json meshio_fields(const std::filesystem::path& file) {
   const std::filesystem::path script =
-      std::filesystem::path(__FILE__).parent_path() / "external" / "meshio_fields.py";
+      std::filesystem::path(VOLMESH_TEST_SOURCE) / "apps" / "external" / "meshio_fields.py";
   const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + file.string() + "' 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return {};

@@ -142,7 +142,7 @@ std::string file_bytes(const fs::path& path) {
 }
 
 std::string run_meshio_script(const std::string& script, const std::string& args) {
-  const fs::path dir = fs::path(__FILE__).parent_path() / "external";
+  const fs::path dir = fs::path(VOLMESH_TEST_SOURCE) / "io" / "external";
   std::string output;
   if (run("/usr/bin/python3 -c 'import meshio'", &output) != 0) {
     ADD_FAILURE() << "/usr/bin/python3 cannot import meshio (`make test` installs python3-meshio): "

@@ -35,7 +35,7 @@ inline bool have_gmsh() {
 
 // tests/partition/<script> with Debian's python, which has meshio.
 inline std::string script(const std::string& name) {
-  return "/usr/bin/python3 '" + (std::filesystem::path(__FILE__).parent_path() / name).string() +
+  return "/usr/bin/python3 '" + (std::filesystem::path(VOLMESH_TEST_SOURCE) / "partition" / name).string() +
          "'";
 }
 
