@@ -41,9 +41,9 @@ TEST(TangentPoint, TheFirstPointsKeepTheirPlaneExactly) {
   const std::vector<Vec3> s{{1, 0, 0}, {1, 0.5, 0.2}, {0.9, 0.1, 0.3}, {0.8, 0.2, 0.35}, {0.95, 0.3, 0.1}};
   const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitX(), Vec3(0.5, 0, 1).normalized(),
                             Vec3(-0.5, 0, 1).normalized(), Vec3(0, 1, 0.2).normalized()};
-  const std::vector<std::uint8_t> first{1, 1, 0, 0, 0};
+  const std::vector<std::uint8_t> level{0, 0, 1, 1, 1};
   EXPECT_GT(std::abs(tangent_intersection(s, n).x() - 1.0), 1e-3);
-  const Vec3 p = tangent_intersection_first(s, n, first);
+  const Vec3 p = tangent_intersection_ranked(s, n, level);
   EXPECT_NEAR(p.x(), 1.0, 1e-14);
   // In the plane x = 1 the other planes' least-squares point: n_y y + n_z z = n.s - n_x.
   Eigen::Matrix<double, 3, 2> a;
@@ -55,9 +55,32 @@ TEST(TangentPoint, TheFirstPointsKeepTheirPlaneExactly) {
   const Eigen::Vector2d yz = a.colPivHouseholderQr().solve(b);
   EXPECT_NEAR(p.y(), yz[0], 1e-12);
   EXPECT_NEAR(p.z(), yz[1], 1e-12);
-  // No first points: the plain fit.
-  const std::vector<std::uint8_t> none(s.size(), 0);
-  EXPECT_LT((tangent_intersection_first(s, n, none) - tangent_intersection(s, n)).norm(), 1e-14);
+  // One level: the plain fit.
+  const std::vector<std::uint8_t> one(s.size(), 0);
+  EXPECT_EQ(tangent_intersection_ranked(s, n, one), tangent_intersection(s, n));
+}
+
+TEST(TangentPoint, LaterLevelsOnlyFitTheDirectionsLeftFree) {
+  // Level 0: the plane x = 0; level 1: the plane z = 0.5 and a plane tilted towards x that
+  // alone would pull the point off x = 0; level 2: y = 0.25, in the one direction left.
+  const std::vector<Vec3> s{{0, 0, 0}, {0.3, 0.3, 0.5}, {0.1, 0, 0.5}, {0.7, 0.25, 0.9}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3::UnitZ(), Vec3(1, 0, 1).normalized(), Vec3::UnitY()};
+  const std::vector<std::uint8_t> level{0, 1, 1, 2};
+  const Vec3 p = tangent_intersection_ranked(s, n, level);
+  EXPECT_EQ(p.x(), 0.0);
+  EXPECT_NEAR(p.y(), 0.25, 1e-14);
+  // Level 1 fits z alone at x = 0: (z - 0.5)^2 + ((z - 0.6) / sqrt 2)^2 least, z = 1.6 / 3.
+  EXPECT_NEAR(p.z(), 1.6 / 3.0, 1e-14);
+}
+
+TEST(TangentPoint, FewDirectionsTellsPlanesFromCurvedSurfaces) {
+  const std::vector<Vec3> box{Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitX(), -Vec3::UnitY()};
+  EXPECT_TRUE(few_directions(box, 2));
+  EXPECT_FALSE(few_directions(box, 1));
+  const std::vector<Vec3> sphere{Vec3(0, 0, 1), Vec3(0.01, 0, 1).normalized()};
+  EXPECT_TRUE(few_directions(sphere, 2));
+  EXPECT_FALSE(few_directions(sphere, 2, 2));
+  EXPECT_TRUE(few_directions(box, 2, 2));
 }
 
 TEST(SharpFeature, SmoothNormalsHaveNone) {

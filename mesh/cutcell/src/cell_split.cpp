@@ -64,6 +64,12 @@ class Splitter {
       faces_.push_back(p.faces);
     }
     size_ = cell_size(in.corners);
+    Index material = 0;
+    for (const CellPolygon& p : in.polygons) {
+      if (p.region == 0) continue;
+      materials_meet_ = materials_meet_ || (material != 0 && p.region != material);
+      material = p.region;
+    }
   }
   CellSplit run();
 
@@ -79,8 +85,19 @@ class Splitter {
   }
   void build_loops();
   std::vector<std::uint8_t> boundary_edge_points() const;
-  std::optional<Vec3> fitted_cell_point(const std::vector<std::uint8_t>& on_boundary) const;
-  int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted);
+  struct EdgeNormals {
+    std::vector<Vec3> points, normals;
+    std::vector<std::uint8_t> level;  // 0: on the domain's boundary
+  };
+  EdgeNormals edge_normals(const std::vector<std::uint8_t>& on_boundary) const;
+  static std::pair<std::vector<Vec3>, std::vector<Vec3>> boundary_planes(const EdgeNormals& edges);
+  Vec3 onto_planes(std::span<const Vec3> s, std::span<const Vec3> n, Vec3 p, double margin,
+                   int max_rank) const;
+  std::optional<Vec3> clamp_component(const std::vector<int>& loop, bool on_boundary, const Vec3& p,
+                                      double reach, int max_rank) const;
+  std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges) const;
+  int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
+                 const EdgeNormals& edges);
   bool boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_boundary) const;
   bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
   std::vector<Candidate> candidates(const Loop& loop);
@@ -92,8 +109,8 @@ class Splitter {
   }
   // The edge points of a loop with known normals.
   std::pair<std::vector<Vec3>, std::vector<Vec3>> fitted_points(const std::vector<int>& loop) const;
-  void split_along_feature(const std::vector<int>& loop, std::vector<Candidate>& out);
-  void smooth_candidates(const std::vector<int>& loop, std::vector<Candidate>& out);
+  void split_along_feature(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
+  void smooth_candidates(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
   int face_point_near(const Loop& loop, const Vec3& p) const;
   void build_pieces();
   // The pieces on the lower and the higher label's side of a component.
@@ -110,6 +127,7 @@ class Splitter {
   const CellInput& in_;
   const CellOptions& options_;
   double size_;
+  bool materials_meet_ = false;  // two regions of the domain, not just one and the outside
   std::vector<Vec3> position_;
   std::vector<std::uint8_t> faces_;
   std::vector<CellSegment> segments_;  // normalised
@@ -128,24 +146,84 @@ std::vector<std::uint8_t> Splitter::boundary_edge_points() const {
   return out;
 }
 
-// The least-squares junction point of the cell's edge points (those on the domain's boundary
-// fitted first), inside the cell; nullopt when it lies beyond reach.
-std::optional<Vec3> Splitter::fitted_cell_point(const std::vector<std::uint8_t>& on_boundary) const {
-  std::vector<Vec3> s, n;
-  std::vector<std::uint8_t> boundary;
+// The cell's edge points with known normals, level 0 those on the domain's boundary.
+Splitter::EdgeNormals Splitter::edge_normals(const std::vector<std::uint8_t>& on_boundary) const {
+  EdgeNormals out;
   for (std::size_t i = 0; i < in_.points.size(); ++i)
     if (const CellPoint& q = in_.points[i]; q.kind == CellPointKind::edge && !q.normal.isZero()) {
-      s.push_back(q.position);
-      n.push_back(q.normal);
-      boundary.push_back(on_boundary[i]);
+      out.points.push_back(q.position);
+      out.normals.push_back(q.normal);
+      out.level.push_back(on_boundary[i] ? 0 : 1);
     }
-  if (s.empty()) return std::nullopt;
-  return clamp_into_cell(in_.corners, tangent_intersection_first(s, n, boundary, 3),
-                         options_.junction_margin * size_, options_.reach * size_);
+  return out;
+}
+
+// p moved onto the planes through points s with normals n (at most max_rank of them), while
+// keeping `margin` from the cell's faces where both can hold (alternating projections):
+// pushing a point on the domain's boundary off a face must not push it off a planar
+// boundary, or the domain's volume changes. p itself when the normals take more than
+// max_rank directions (a curved boundary: no plane to keep), or the point would leave the cell.
+Vec3 Splitter::onto_planes(std::span<const Vec3> s, std::span<const Vec3> n, Vec3 p, double margin,
+                           int max_rank) const {
+  const auto axial = [](const Vec3& m) { return (m.cwiseAbs().array() == 1.0).any(); };
+  if (s.empty() || !few_directions(n, max_rank, 2) ||
+      !(materials_meet_ || std::all_of(n.begin(), n.end(), axial)))
+    return p;
+  const Vec3 start = p;
+  for (int pass = 0; pass < 8; ++pass) {
+    p = tangent_intersection(s, n, p, max_rank);
+    if (depth_inside_cell(in_.corners, p) >= 0.99 * margin) break;
+    p = *clamp_into_cell(in_.corners, p, margin, std::numeric_limits<double>::infinity());
+  }
+  p = tangent_intersection(s, n, p, max_rank);
+  // A boundary that crosses a face warped by vertex moves may run just outside the face's
+  // mean plane: the point may follow it as far as the junction margin.
+  return depth_inside_cell(in_.corners, p) > -options_.junction_margin * size_ ? p : start;
+}
+
+// The planes of the domain's boundary at the cell's edge points.
+std::pair<std::vector<Vec3>, std::vector<Vec3>> Splitter::boundary_planes(const EdgeNormals& edges) {
+  std::pair<std::vector<Vec3>, std::vector<Vec3>> out;
+  for (std::size_t i = 0; i < edges.points.size(); ++i)
+    if (edges.level[i] == 0) {
+      out.first.push_back(edges.points[i]);
+      out.second.push_back(edges.normals[i]);
+    }
+  return out;
+}
+
+// clamp() keeping the centre of a fan over a component on the domain's boundary on the
+// component's tangent planes (at most max_rank of them), unless that turns a fan triangle
+// over: a centre moved onto a sharp edge beyond the loop's own point on it folds the fan.
+std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, bool on_boundary,
+                                              const Vec3& p, double reach, int max_rank) const {
+  const std::optional<Vec3> q = clamp(p, reach);
+  if (!q || !on_boundary) return q;
+  const auto [s, n] = fitted_points(loop);
+  const Vec3 r = onto_planes(s, n, *q, options_.margin * size_, max_rank);
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec3 &a = position_[loop[k]], &b = position_[loop[(k + 1) % loop.size()]];
+    if (!((a - *q).cross(b - *q).dot((a - r).cross(b - r)) > 0.0)) return q;
+  }
+  return r;
+}
+
+// The least-squares junction point of the cell's edge points (those on the domain's boundary
+// fitted first), inside the cell; nullopt when it lies beyond reach.
+std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges) const {
+  if (edges.points.empty()) return std::nullopt;
+  const double margin = options_.junction_margin * size_;
+  const std::optional<Vec3> p =
+      clamp_into_cell(in_.corners, tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3),
+                      margin, options_.reach * size_);
+  if (!p) return p;
+  const auto [s, n] = boundary_planes(edges);
+  return onto_planes(s, n, *p, margin, 3);
 }
 
 // `fitted`: fitted_cell_point() with exact points.
-int Splitter::cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted) {
+int Splitter::cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
+                         const EdgeNormals& edges) {
   Vec3 p;
   if (!options_.exact_points) {
     p = Vec3::Zero();
@@ -156,6 +234,8 @@ int Splitter::cell_point(const std::vector<int>& face_points, const std::optiona
     out_.cell_point_left_cell = true;
     p = Vec3::Zero();
     for (int f : face_points) p += position_[f] / static_cast<double>(face_points.size());
+    const auto [s, n] = boundary_planes(edges);
+    p = onto_planes(s, n, p, options_.margin * size_, 3);
   }
   return add_point(p);
 }
@@ -198,13 +278,14 @@ void Splitter::build_loops() {
   const int nif = static_cast<int>(face_points.size());
   int centre = -1;
   if (nif > 2 && !options_.exact_points) {
-    centre = cell_point(face_points, std::nullopt);
+    centre = cell_point(face_points, std::nullopt, {});
   } else if (nif >= 2 && options_.exact_points) {
     const std::vector<std::uint8_t> on_boundary = boundary_edge_points();
     if (nif > 2 || boundary_edge_is_sharp(on_boundary)) {
-      const std::optional<Vec3> fitted = fitted_cell_point(on_boundary);
+      const EdgeNormals edges = edge_normals(on_boundary);
+      const std::optional<Vec3> fitted = fitted_cell_point(edges);
       if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
-        centre = cell_point(face_points, fitted);
+        centre = cell_point(face_points, fitted, edges);
     }
   }
 
@@ -295,28 +376,31 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
   if (loop.through_cell_point)
     return {{LoopMethod::interface_fan, triangulate_fan(loop.points, loop.points.back())}};
   std::vector<Candidate> out;
+  const bool on_boundary = loop.lower == 0;
   if (options_.exact_points) {
     const auto [s, n] = fitted_points(loop.points);
     if (s.size() >= 2)
       if (const auto feature = sharp_feature(s, n, options_.feature)) {
-        if (!feature->corner) split_along_feature(loop.points, out);
+        if (!feature->corner) split_along_feature(loop.points, on_boundary, out);
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
         if (const int on_face = face_point_near(loop, feature->point); on_face >= 0)
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
-        else if (const auto p = clamp(feature->point, options_.feature_reach))
+        else if (const auto p = clamp_component(loop.points, on_boundary, feature->point,
+                                                options_.feature_reach, feature->corner ? 3 : 2))
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, add_point(*p))});
         if (!out.empty()) return out;
       }
   }
-  smooth_candidates(loop.points, out);
+  smooth_candidates(loop.points, on_boundary, out);
   return out;
 }
 
 // A sharp edge crossing the cell enters and leaves it through two faces, at their CMS feature
 // points: the segment between them is the edge (exact when straight, O(h^2) off a curved one).
 // The component is split along it and each flat side triangulated on its own.
-void Splitter::split_along_feature(const std::vector<int>& loop, std::vector<Candidate>& out) {
+void Splitter::split_along_feature(const std::vector<int>& loop, bool on_boundary,
+                                   std::vector<Candidate>& out) {
   const int n = static_cast<int>(loop.size());
   std::vector<int> at;
   for (int k = 0; k < n; ++k)
@@ -329,8 +413,8 @@ void Splitter::split_along_feature(const std::vector<int>& loop, std::vector<Can
   std::vector<int> second(loop.begin() + k2, loop.end());
   second.insert(second.end(), loop.begin(), loop.begin() + k1 + 1);
   std::vector<Candidate> a, b;
-  smooth_candidates(first, a);
-  smooth_candidates(second, b);
+  smooth_candidates(first, on_boundary, a);
+  smooth_candidates(second, on_boundary, b);
   const auto join = [&](std::size_t i, std::size_t j) {
     Candidate c{LoopMethod::feature_split, a[i].triangles};
     c.triangles.insert(c.triangles.end(), b[j].triangles.begin(), b[j].triangles.end());
@@ -346,7 +430,8 @@ void Splitter::split_along_feature(const std::vector<int>& loop, std::vector<Can
 // centres that checkMesh finds skewed; rank 1: the mass point moved onto the mean tangent
 // plane, O(h^2) off the interface), otherwise divide and conquer (Algorithm 1); then the
 // other of the two, §4.1's construction and the fan around the centroid.
-void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candidate>& out) {
+void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
+                                 std::vector<Candidate>& out) {
   if (loop.size() == 3) {
     out.push_back({LoopMethod::divide_and_conquer, {{loop[0], loop[1], loop[2]}}});
     return;
@@ -356,7 +441,7 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candi
   std::optional<Candidate> surface;
   const auto [s, n] = fitted_points(loop);
   if (!s.empty())
-    if (const auto p = clamp(tangent_intersection(s, n, mass, 1), options_.reach))
+    if (const auto p = clamp_component(loop, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
       surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, add_point(*p))};
   const bool large = static_cast<int>(loop.size()) >= options_.fan_points;
   // After add_point: the spans must see the vectors as they are now.
@@ -365,7 +450,7 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, std::vector<Candi
   if (auto t = triangulate_divide_and_conquer(points, loop)) out.push_back({LoopMethod::divide_and_conquer, std::move(*t)});
   if (surface && !large) out.push_back(*surface);
   if (auto t = triangulate_across_faces(points, loop)) out.push_back({LoopMethod::across_faces, std::move(*t)});
-  if (const auto p = clamp(mass, options_.reach))
+  if (const auto p = clamp_component(loop, on_boundary, mass, options_.reach, 1))
     out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(*p))});
   if (out.empty()) out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(mass))});
 }

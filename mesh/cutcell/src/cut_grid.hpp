@@ -25,9 +25,10 @@ inline constexpr PointKey kCellKey = PointKey{3} << 32;
 struct EdgePoint {
   Vec3 point = Vec3::Zero();
   Vec3 normal = Vec3::Zero();  // unit, from the lower vertex's region into the higher's
-  // The edge's single crossing, between exactly its end regions: its normal is that of the
-  // interface the point lies on. Otherwise (an edge still crossed several times at the
-  // deepest level) the normal is left out of the least-squares points.
+  // The edge's single crossing, between exactly its end regions, or its crossing with the
+  // domain's boundary when an end lies outside: its normal is that of the interface the
+  // point lies on. Otherwise (an edge still crossed several times at the deepest level) the
+  // normal is left out of the least-squares points.
   bool exact = false;
 };
 

@@ -78,6 +78,8 @@ class Contourer {
     const double len = m.norm();
     return len > 1e-12 ? Vec3(m / len) : Vec3::Zero();
   }
+  Vec3 tangent_point(const std::vector<int>& points) const;
+  Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
   void walk_polygons();
@@ -97,6 +99,37 @@ class Contourer {
   FaceContour out_;
 };
 
+// The least-squares intersection of the tangent lines at these interface points, those of
+// the domain's boundary (region 0 on one side) fitted first; then moved onto the boundary's
+// tangent planes in space: on a face warped by vertex moves the lines in its mean plane
+// miss a planar boundary.
+Vec3 Contourer::tangent_point(const std::vector<int>& points) const {
+  std::vector<Vec3> s, m;
+  std::vector<std::uint8_t> level;
+  for (int i : points) {
+    s.push_back(at(i).position);
+    m.push_back(projected_normal(i));
+    level.push_back(region_before(i) == 0 || region_after(i) == 0 ? 0 : 1);
+  }
+  return onto_boundary(points, tangent_intersection_ranked(s, m, level, 2));
+}
+
+// p moved least onto the domain's boundary planes at these interface points (p itself when
+// none crosses the face).
+Vec3 Contourer::onto_boundary(const std::vector<int>& points, const Vec3& p) const {
+  std::vector<Vec3> s, m;
+  for (int i : points)
+    if (region_before(i) == 0 || region_after(i) == 0)
+      if (!at(i).normal.isZero()) {
+        s.push_back(at(i).position);
+        m.push_back(at(i).normal);
+      }
+  // Only planes the octree's faces are parallel to (a box): on a curved boundary the lines
+  // in the face are as good, and moving the point off them can fold the faces around it.
+  const auto axial = [](const Vec3& n) { return (n.cwiseAbs().array() == 1.0).any(); };
+  return s.empty() || !std::all_of(m.begin(), m.end(), axial) ? p : tangent_intersection(s, m, p, 2);
+}
+
 // How well the chord p -> q agrees with the tangent lines at its ends: the normal at each
 // end should point from the chord's left region into its right one. The ambiguous
 // two-region face takes the pairing that agrees best.
@@ -113,8 +146,7 @@ bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
-  const std::array<Vec3, 2> s{at(p).position, at(q).position}, m{mp, mq};
-  const Vec3 point = tangent_intersection(s, m, 2);
+  const Vec3 point = tangent_point({p, q});
   if (depth_inside(frame_, point) < options_.margin * frame_.size) return false;
   out_.kind = FacePointKind::feature_point;
   out_.point = point;
@@ -157,14 +189,7 @@ void Contourer::star() {
   out_.kind = FacePointKind::interface_point;
   int centre = face_point_index();
   if (options_.exact_points) {
-    std::vector<Vec3> s, m;
-    std::vector<std::uint8_t> boundary;  // on the domain's boundary (region 0 on one side)
-    for (int i : crossing_) {
-      s.push_back(at(i).position);
-      m.push_back(projected_normal(i));
-      boundary.push_back(region_before(i) == 0 || region_after(i) == 0);
-    }
-    const Vec3 p = tangent_intersection_first(s, m, boundary, 2);
+    const Vec3 p = tangent_point(crossing_);
     const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
     const int side_point = nearest_side_point(p);
     if (depth_inside(frame_, p) >= margin) {
@@ -176,8 +201,9 @@ void Contourer::star() {
       out_.point = *q;
     } else {
       out_.point_left_face = true;
-      out_.point = Vec3::Zero();
-      for (const Vec3& x : s) out_.point += x / static_cast<double>(s.size());
+      Vec3 mass = Vec3::Zero();
+      for (int i : crossing_) mass += at(i).position / static_cast<double>(crossing_.size());
+      out_.point = onto_boundary(crossing_, mass);
     }
   } else {
     out_.point = frame_.centre;

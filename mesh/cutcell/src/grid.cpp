@@ -114,12 +114,22 @@ void find_edge_points(Grid& grid) {
     tbb::parallel_for(start, end, [&](std::size_t e) {
       const std::vector<Crossing>& h = hits[e - start];
       const Index ra = grid.region[grid.edges[e][0]], rb = grid.region[grid.edges[e][1]];
+      // The point is the first crossing out of ra, unless an end lies outside the domain
+      // behind a boundary plane parallel to the octree's faces (a box): then the crossing
+      // with that plane, so that the box's face stays plane when a layer ends just inside
+      // it. On a curved boundary either crossing is as close, and the first keeps the
+      // cells around a junction better shaped.
+      const auto rank = [ra, rb](const Crossing& c) {
+        const bool boundary = ((ra == 0 && c.before == 0) || (rb == 0 && c.after == 0)) &&
+                              (c.normal.cwiseAbs().array() == 1.0).any();
+        return 2 * boundary + (c.before == ra);
+      };
       int transversal = 0;
       const Crossing* chosen = nullptr;
       for (const Crossing& c : h) {
         if (c.before == c.after) continue;
         ++transversal;
-        if (!chosen || (chosen->before != ra && c.before == ra)) chosen = &c;
+        if (!chosen || rank(c) > rank(*chosen)) chosen = &c;
       }
       grid.edge_crossings[e] = static_cast<std::uint8_t>(std::min(transversal, 255));
       if (ra == rb) return;

@@ -2,7 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <array>
+#include <vector>
 #include <cmath>
 
 namespace volmesh::cutcell {
@@ -15,24 +15,26 @@ Vec3 mass_point(std::span<const Vec3> points) {
   return mass / static_cast<double>(points.size());
 }
 
-// Normal equations A^T A x = A^T b with x = p - origin, per set of points (`first`: the
-// marked ones, then the others; empty: one set): the eigen-decomposition of the symmetric
-// A^T A is the SVD of A, and its truncated inverse A's pseudo-inverse. The second set solves
-// within the directions the first left free (the projector `free` removes those kept).
-Vec3 fit(std::span<const Vec3> points, std::span<const Vec3> normals,
-         std::span<const std::uint8_t> first, const Vec3& origin, int max_rank, double relative_cutoff) {
-  std::array<Eigen::Matrix3d, 2> ata{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
-  std::array<Vec3, 2> atb{Vec3::Zero(), Vec3::Zero()};
+// Normal equations A^T A x = A^T b per level with x = p - origin: the eigen-decomposition of
+// the symmetric A^T A is the SVD of A, and its truncated inverse A's pseudo-inverse. Each
+// level solves within the directions the earlier ones left free (the projector `free`
+// removes the directions kept so far). `level` empty: one level.
+Vec3 fit(std::span<const Vec3> points, std::span<const Vec3> normals, std::span<const std::uint8_t> level,
+         const Vec3& origin, int max_rank, double relative_cutoff) {
+  int levels = 1;
+  for (std::uint8_t l : level) levels = std::max(levels, l + 1);
+  std::vector<Eigen::Matrix3d> ata(levels, Eigen::Matrix3d::Zero());
+  std::vector<Vec3> atb(levels, Vec3::Zero());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3& n = normals[i];
-    const int k = first.empty() || first[i] ? 0 : 1;
+    const int k = level.empty() ? 0 : level[i];
     ata[k] += n * n.transpose();
     atb[k] += n * n.dot(points[i] - origin);
   }
   Vec3 x = Vec3::Zero();
   Eigen::Matrix3d free = Eigen::Matrix3d::Identity();
   int rank = 0;
-  for (int k = 0; k < 2 && rank < max_rank; ++k) {
+  for (int k = 0; k < levels && rank < max_rank; ++k) {
     // Eigenvalues ascending; they are the squared singular values of A. The cutoff is
     // relative to the set's own largest one, before the projection.
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(free * ata[k] * free);
@@ -66,9 +68,32 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
   return fit(points, normals, {}, origin, max_rank, relative_cutoff);
 }
 
-Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                std::span<const std::uint8_t> first, int max_rank, double relative_cutoff) {
-  return fit(points, normals, first, mass_point(points), max_rank, relative_cutoff);
+Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                 std::span<const std::uint8_t> level, int max_rank, double relative_cutoff) {
+  return fit(points, normals, level, mass_point(points), max_rank, relative_cutoff);
+}
+
+Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                 std::span<const std::uint8_t> level, const Vec3& origin, int max_rank,
+                                 double relative_cutoff) {
+  return fit(points, normals, level, origin, max_rank, relative_cutoff);
+}
+
+bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points) {
+  std::vector<Vec3> seen;
+  std::vector<int> count;
+  for (const Vec3& n : normals) {
+    const auto same = [&n](const Vec3& m) { return n.dot(m) > 1.0 - 1e-12; };
+    const auto found = std::find_if(seen.begin(), seen.end(), same);
+    if (found != seen.end()) {
+      ++count[found - seen.begin()];
+    } else {
+      if (static_cast<int>(seen.size()) == max_planes) return false;
+      seen.push_back(n);
+      count.push_back(1);
+    }
+  }
+  return std::all_of(count.begin(), count.end(), [min_points](int c) { return c >= min_points; });
 }
 
 std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<const Vec3> normals,

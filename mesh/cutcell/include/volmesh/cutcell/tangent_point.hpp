@@ -23,13 +23,21 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
 Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
                           const Vec3& origin, int max_rank = 3, double relative_cutoff = 0.1);
 
-// The same with the points marked `first` fitted first: the directions their normals
-// constrain are theirs alone, the other points fit the directions left free. A junction with
-// the domain's boundary stays on the boundary's tangent planes (exactly on a planar face or
-// edge) whatever the interior interfaces meeting it do.
-Vec3 tangent_intersection_first(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                std::span<const std::uint8_t> first, int max_rank = 3,
-                                double relative_cutoff = 0.1);
+// The same with the points in priority levels, 0 first: each level fits only the directions
+// the earlier levels leave free. A junction with the domain's boundary (level 0) stays on the
+// boundary's tangent planes (exactly on a planar face or edge) whatever the interior
+// interfaces meeting it do.
+Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                 std::span<const std::uint8_t> level, int max_rank = 3,
+                                 double relative_cutoff = 0.1);
+Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
+                                 std::span<const std::uint8_t> level, const Vec3& origin,
+                                 int max_rank = 3, double relative_cutoff = 0.1);
+
+// Whether the normals take at most max_planes directions (to rounding), each at min_points
+// points or more: the points lie on that many planes, as on a box's faces, rather than on a
+// curved surface (a direction seen once may be one normal of a curved surface).
+bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points = 1);
 
 // The Kobbelt/EMC feature test on one contour component: theta = min n_i . n_j; a sharp
 // feature when theta < theta_s. With n* = n0 x n1 for the pair of least dot product,
