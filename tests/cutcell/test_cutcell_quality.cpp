@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
+#include "volmesh/io/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {
@@ -78,6 +80,22 @@ TEST(CutcellQuality, PrimitivesJunctionsLeaveNoThinCellsAndFewRejectedFaces) {
   EXPECT_LE(r.max_skewness, 8.0);
   EXPECT_DOUBLE_EQ(stats.max_skewness, r.max_skewness);  // the stats measure the whole mesh
   EXPECT_LE(stats.bad_faces, 10);
+}
+
+// Where layers end on the box, the splitter's last resort for a skewed face and the merging's
+// face joins used to make polygons folded over themselves (levels 4 and 5, near the box face
+// x = 0), and the polyhedral FEM refused the mesh. A merged polygon is now kept only when
+// split_polygon, the FEM's own verdict, finds it unfolded.
+TEST(CutcellQuality, Layers6HasNoFoldedFaces) {
+  for (const auto& [level, base] : {std::pair{4, 3}, std::pair{4, 4}, std::pair{5, 3}}) {
+    CutcellOptions options;
+    options.octree.level = level;
+    options.octree.base_level = base;
+    const PolyMesh mesh = cutcell_mesh(*make_builtin_domain("layers6"), options);
+    Index folded = 0;
+    for (Index f = 0; f < mesh.num_faces(); ++f) folded += split_polygon(mesh.points, mesh.face(f)).folded;
+    EXPECT_EQ(folded, 0) << "level " << level << ", base level " << base;
+  }
 }
 
 // Merging moves no point: the cells stay closed, and a region's volume changes only where

@@ -38,6 +38,23 @@ FaceGeometry polygon_geometry(const std::vector<Vec3>& points, std::span<const I
   return {area, weight > 0.0 ? Vec3(centre / weight) : mid};
 }
 
+bool fan_is_proper(const std::vector<Vec3>& points, std::span<const Index> loop) {
+  const std::size_t n = loop.size();
+  Vec3 m = Vec3::Zero();
+  for (Index v : loop) m += points[v];
+  m /= static_cast<double>(n);
+  const auto area = [&](std::size_t k) {
+    const Vec3& p = points[loop[k]];
+    return Vec3((points[loop[(k + 1) % n]] - p).cross(m - p));
+  };
+  Vec3 total = Vec3::Zero();
+  for (std::size_t k = 0; k < n; ++k) total += area(k);
+  const double floor = 1e-10 * total.squaredNorm() / static_cast<double>(n);
+  for (std::size_t k = 0; k < n; ++k)
+    if (!(area(k).dot(total) > floor)) return false;
+  return true;
+}
+
 FaceGeometry face_geometry(const PolyMesh& mesh, Index f) {
   return polygon_geometry(mesh.points, mesh.face(f));
 }

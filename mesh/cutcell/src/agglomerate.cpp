@@ -9,6 +9,7 @@
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/cutcell/cell_split.hpp"
+#include "volmesh/io/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {
@@ -213,8 +214,9 @@ bool Agglomerator::try_merge(Index x, bool tiny) {
 }
 
 // A face beyond the limits between two cells joined with a face beside it between the same
-// two cells (sharing one edge) into one polygon, while that lowers its score: a sliver
-// triangle's normal is all but arbitrary, the polygon's is that of the patch.
+// two cells (sharing one edge) into one polygon, while that lowers its score and the
+// polygon does not fold over itself: a sliver triangle's normal is all but arbitrary, the
+// polygon's is that of the patch.
 bool Agglomerator::join_faces(Index f) {
   const Index owner = mesh_.owner[f], neighbour = mesh_.neighbour[f];
   bool joined = false;
@@ -230,7 +232,8 @@ bool Agglomerator::join_faces(Index f) {
       std::vector<Index> other = loops_[g];
       if (mesh_.owner[g] != owner) std::reverse(other.begin(), other.end());
       std::vector<Index> merged = merge_along_edge(loops_[f], other);
-      if (merged.empty()) continue;
+      // A polygon folded over itself would fold the cells on it.
+      if (merged.empty() || split_polygon(mesh_.points, merged).folded) continue;
       const FaceGeometry geometry = polygon_geometry(mesh_.points, merged);
       if (const double w = score(geometry, merged, cell_[owner].centre, nc); w < best) {
         best = w;

@@ -1,6 +1,7 @@
 #include "volmesh/cutcell/cell_split.hpp"
 
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/io/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 #include <algorithm>
@@ -577,7 +578,8 @@ void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
         for (std::size_t g = 0; g < faces.size(); ++g) {
           if (g == f || faces[g].empty()) continue;
           const std::vector<int> merged = merge_along_edge(faces[f], faces[g]);
-          if (merged.empty()) continue;
+          // A polygon folded over itself would fold the pieces on it.
+          if (merged.empty() || split_polygon(position_, std::vector<Index>(merged.begin(), merged.end())).folded) continue;
           const Vec3 ag = polygon_geometry(position_, std::vector<Index>(faces[g].begin(), faces[g].end())).area_vector;
           // A sliver's normal means little: it may join a face four times its size at any angle.
           if (nf.dot(ag.normalized()) < cos_limit && af.norm() > 0.25 * ag.norm()) continue;

@@ -17,6 +17,11 @@ struct FaceGeometry {
 FaceGeometry face_geometry(const PolyMesh& mesh, Index f);
 FaceGeometry polygon_geometry(const std::vector<Vec3>& points, std::span<const Index> loop);
 
+// Whether every triangle of the fan around the loop's vertex average faces the way the whole
+// polygon does (each by more than a rounding floor): the decomposition above then covers the
+// polygon once.
+bool fan_is_proper(const std::vector<Vec3>& points, std::span<const Index> loop);
+
 struct CellGeometry {
   double volume;
   Vec3 centre;
