@@ -94,7 +94,8 @@ class Splitter {
   static std::pair<std::vector<Vec3>, std::vector<Vec3>> boundary_planes(const EdgeNormals& edges);
   Vec3 onto_planes(std::span<const Vec3> s, std::span<const Vec3> n, Vec3 p, double margin,
                    int max_rank) const;
-  std::optional<Vec3> clamp_component(const std::vector<int>& loop, bool on_boundary, const Vec3& p,
+  std::optional<Vec3> clamp_component(const std::vector<int>& loop, std::span<const Vec3> s,
+                                      std::span<const Vec3> n, bool on_boundary, const Vec3& p,
                                       double reach, int max_rank) const;
   std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
@@ -166,9 +167,8 @@ Splitter::EdgeNormals Splitter::edge_normals(const std::vector<std::uint8_t>& on
 // max_rank directions (a curved boundary: no plane to keep), or the point would leave the cell.
 Vec3 Splitter::onto_planes(std::span<const Vec3> s, std::span<const Vec3> n, Vec3 p, double margin,
                            int max_rank) const {
-  const auto axial = [](const Vec3& m) { return (m.cwiseAbs().array() == 1.0).any(); };
   if (s.empty() || !few_directions(n, max_rank, 2) ||
-      !(materials_meet_ || std::all_of(n.begin(), n.end(), axial)))
+      !(materials_meet_ || std::all_of(n.begin(), n.end(), parallel_to_octree_faces)))
     return p;
   const Vec3 start = p;
   for (int pass = 0; pass < 8; ++pass) {
@@ -194,13 +194,14 @@ std::pair<std::vector<Vec3>, std::vector<Vec3>> Splitter::boundary_planes(const 
 }
 
 // clamp() keeping the centre of a fan over a component on the domain's boundary on the
-// component's tangent planes (at most max_rank of them), unless that turns a fan triangle
-// over: a centre moved onto a sharp edge beyond the loop's own point on it folds the fan.
-std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, bool on_boundary,
+// component's tangent planes (through its fitted points s with normals n, at most max_rank
+// of them), unless that turns a fan triangle over: a centre moved onto a sharp edge beyond
+// the loop's own point on it folds the fan.
+std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std::span<const Vec3> s,
+                                              std::span<const Vec3> n, bool on_boundary,
                                               const Vec3& p, double reach, int max_rank) const {
   const std::optional<Vec3> q = clamp(p, reach);
   if (!q || !on_boundary) return q;
-  const auto [s, n] = fitted_points(loop);
   const Vec3 r = onto_planes(s, n, *q, options_.margin * size_, max_rank);
   for (std::size_t k = 0; k < loop.size(); ++k) {
     const Vec3 &a = position_[loop[k]], &b = position_[loop[(k + 1) % loop.size()]];
@@ -387,7 +388,7 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
         // point or interface point) is the fan centre: a point beside it would make slivers.
         if (const int on_face = face_point_near(loop, feature->point); on_face >= 0)
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
-        else if (const auto p = clamp_component(loop.points, on_boundary, feature->point,
+        else if (const auto p = clamp_component(loop.points, s, n, on_boundary, feature->point,
                                                 options_.feature_reach, feature->corner ? 3 : 2))
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, add_point(*p))});
         if (!out.empty()) return out;
@@ -442,7 +443,7 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   std::optional<Candidate> surface;
   const auto [s, n] = fitted_points(loop);
   if (!s.empty())
-    if (const auto p = clamp_component(loop, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
+    if (const auto p = clamp_component(loop, s, n, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
       surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, add_point(*p))};
   const bool large = static_cast<int>(loop.size()) >= options_.fan_points;
   // After add_point: the spans must see the vectors as they are now.
@@ -451,7 +452,7 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   if (auto t = triangulate_divide_and_conquer(points, loop)) out.push_back({LoopMethod::divide_and_conquer, std::move(*t)});
   if (surface && !large) out.push_back(*surface);
   if (auto t = triangulate_across_faces(points, loop)) out.push_back({LoopMethod::across_faces, std::move(*t)});
-  if (const auto p = clamp_component(loop, on_boundary, mass, options_.reach, 1))
+  if (const auto p = clamp_component(loop, s, n, on_boundary, mass, options_.reach, 1))
     out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(*p))});
   if (out.empty()) out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(mass))});
 }

@@ -126,8 +126,8 @@ Vec3 Contourer::onto_boundary(const std::vector<int>& points, const Vec3& p) con
       }
   // Only planes the octree's faces are parallel to (a box): on a curved boundary the lines
   // in the face are as good, and moving the point off them can fold the faces around it.
-  const auto axial = [](const Vec3& n) { return (n.cwiseAbs().array() == 1.0).any(); };
-  return s.empty() || !std::all_of(m.begin(), m.end(), axial) ? p : tangent_intersection(s, m, p, 2);
+  return s.empty() || !std::all_of(m.begin(), m.end(), parallel_to_octree_faces) ? p
+                                                                                : tangent_intersection(s, m, p, 2);
 }
 
 // How well the chord p -> q agrees with the tangent lines at its ends: the normal at each

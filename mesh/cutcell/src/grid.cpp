@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "cut_grid.hpp"
+#include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {
@@ -121,7 +122,7 @@ void find_edge_points(Grid& grid) {
       // cells around a junction better shaped.
       const auto rank = [ra, rb](const Crossing& c) {
         const bool boundary = ((ra == 0 && c.before == 0) || (rb == 0 && c.after == 0)) &&
-                              (c.normal.cwiseAbs().array() == 1.0).any();
+                              parallel_to_octree_faces(c.normal);
         return 2 * boundary + (c.before == ra);
       };
       int transversal = 0;

@@ -73,12 +73,6 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
   return fit(points, normals, level, mass_point(points), max_rank, relative_cutoff);
 }
 
-Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                 std::span<const std::uint8_t> level, const Vec3& origin, int max_rank,
-                                 double relative_cutoff) {
-  return fit(points, normals, level, origin, max_rank, relative_cutoff);
-}
-
 bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points) {
   std::vector<Vec3> seen;
   std::vector<int> count;

@@ -30,14 +30,17 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
 Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
                                  std::span<const std::uint8_t> level, int max_rank = 3,
                                  double relative_cutoff = 0.1);
-Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                 std::span<const std::uint8_t> level, const Vec3& origin,
-                                 int max_rank = 3, double relative_cutoff = 0.1);
 
 // Whether the normals take at most max_planes directions (to rounding), each at min_points
 // points or more: the points lie on that many planes, as on a box's faces, rather than on a
 // curved surface (a direction seen once may be one normal of a curved surface).
 bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points = 1);
+
+// Whether a unit normal is exactly an axis: the plane is parallel to the octree's faces (a
+// box's face), the only boundary planes points are moved back onto.
+inline bool parallel_to_octree_faces(const Vec3& normal) {
+  return (normal.cwiseAbs().array() == 1.0).any();
+}
 
 // The Kobbelt/EMC feature test on one contour component: theta = min n_i . n_j; a sharp
 // feature when theta < theta_s. With n* = n0 x n1 for the pair of least dot product,
