@@ -220,7 +220,10 @@ bool Agglomerator::try_merge(Index x, bool tiny) {
 bool Agglomerator::join_faces(Index f) {
   const Index owner = mesh_.owner[f], neighbour = mesh_.neighbour[f];
   bool joined = false;
+  // A join takes a face from each cell; a polyhedron keeps at least four.
+  const auto can_lose_a_face = [this](Index c) { return c == kNoIndex || faces_of_[c].size() > 4; };
   for (;;) {
+    if (!can_lose_a_face(owner) || !can_lose_a_face(neighbour)) return joined;
     const Vec3* nc = neighbour == kNoIndex ? nullptr : &cell_[neighbour].centre;
     double best = face_score(f);
     if (best <= 1.0) return joined;
