@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
@@ -40,6 +41,38 @@ TEST(CutcellMesh, Layers6RegionsFillTheUnitBox) {
     ASSERT_TRUE(report.valid()) << "level " << level;
     EXPECT_NEAR(report.total_volume, 1.0, 1e-10) << "level " << level;
   }
+}
+
+// The margin that puts the unit box's faces `offset` cells from the grid planes at `level`
+// (the root is centred on the box: the faces lie 2^(level-1) 2m / (1 + 2m) cells in).
+double margin_for_offset(int level, double offset) {
+  const double r = (1.0 + offset) / std::ldexp(1.0, level - 1);
+  return r / (2.0 * (1.0 - r));
+}
+
+// Faces passing a few hundredths of a cell from the grid planes: every grid vertex along them
+// is moved off. Those next to the box's edges and corners must go out across every face near
+// them, and the edge and corner points must stay on the box (not be pushed a margin into the
+// faces and cells); before, 5% of the cube was cut off along its edges.
+TEST(CutcellMesh, BoxFacesNearGridPlanesKeepEdgesAndCorners) {
+  const auto box = make_builtin_domain("box");
+  for (const double offset : {0.01, 0.02, 0.03}) {
+    CutcellOptions options;
+    options.octree.level = 3;
+    options.octree.margin = margin_for_offset(3, offset);
+    CutcellStats stats;
+    const ValidityReport report = check_validity(cutcell_mesh(*box, options, &stats));
+    ASSERT_TRUE(report.valid()) << offset;
+    EXPECT_GT(stats.moved_vertices, 100) << offset;
+    EXPECT_NEAR(report.total_volume, 1.0, 1e-10) << offset;
+  }
+  // layers6 there: merged faces once left a cell of three faces.
+  CutcellOptions options;
+  options.octree.level = 4;
+  options.octree.margin = margin_for_offset(4, 0.02);
+  const ValidityReport report = check_validity(cutcell_mesh(*make_builtin_domain("layers6"), options));
+  EXPECT_TRUE(report.valid()) << (report.problems.empty() ? "" : report.problems.front());
+  EXPECT_NEAR(report.total_volume, 1.0, 1e-5);
 }
 
 }  // namespace

@@ -202,7 +202,19 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
                                               const Vec3& p, double reach, int max_rank) const {
   const std::optional<Vec3> q = clamp(p, reach);
   if (!q || !on_boundary) return q;
-  const Vec3 r = onto_planes(s, n, *q, options_.margin * size_, max_rank);
+  // A point on the boundary's planes parallel to the octree's faces (a box's corner or edge)
+  // stays where it is in the cell: next to the domain's boundary only the outside piece,
+  // which is dropped, lies between it and the faces it is near, and pushed in it would cut
+  // the corner off. As in onto_planes, it may lie as far as the junction margin outside the
+  // mean planes of faces warped by vertex moves.
+  const auto on_box_planes = [&] {
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (!parallel_to_octree_faces(n[i]) || std::abs(n[i].dot(p - s[i])) > 1e-9 * size_) return false;
+    return !s.empty();
+  };
+  const Vec3 r = depth_inside_cell(in_.corners, p) > -options_.junction_margin * size_ && on_box_planes()
+                     ? p
+                     : onto_planes(s, n, *q, options_.margin * size_, max_rank);
   for (std::size_t k = 0; k < loop.size(); ++k) {
     const Vec3 &a = position_[loop[k]], &b = position_[loop[(k + 1) % loop.size()]];
     if (!((a - *q).cross(b - *q).dot((a - r).cross(b - r)) > 0.0)) return q;

@@ -83,6 +83,7 @@ class Contourer {
   void chord(int p, int q);
   void star();
   void walk_polygons();
+  bool keeps_margin(int p, int q, const Vec3& point) const;
   bool try_feature_point(int p, int q);
   int nearest_side_point(const Vec3& p) const;
   double chord_agreement(int p, int q) const;
@@ -142,12 +143,36 @@ double Contourer::chord_agreement(int p, int q) const {
   return projected_normal(p).dot(right) - projected_normal(q).dot(right);
 }
 
+// Whether a feature point on the chord p -> q keeps the margin from the sides. On planes of
+// the domain's boundary parallel to the octree's faces only the kept polygon's sides count:
+// at a box's edge the point may lie deep in the corner of the face, beside the outside
+// corner alone (the box's faces just off the grid planes), and there the outside polygon's
+// sliver is dropped with it.
+bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
+  const double margin = options_.margin * frame_.size;
+  const double depth = depth_inside(frame_, point);
+  if (depth >= margin) return true;
+  const Index before = region_before(p), after = region_after(p);
+  if (depth <= 0.0 || (before != 0 && after != 0) || !parallel_to_octree_faces(at(p).normal) ||
+      !parallel_to_octree_faces(at(q).normal))
+    return false;
+  // The kept polygon's boundary runs from p to q when it lies after p, else from q to p.
+  const int from = after != 0 ? p : q, to = after != 0 ? q : p;
+  for (int i = from; i % n_ != to; ++i) {
+    const Vec3 a = at(i).position, b = at(i + 1).position;
+    const Vec3 ab = in_plane(b - a, frame_.normal), ap = in_plane(point - a, frame_.normal);
+    const double t = std::clamp(ap.dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    if ((ap - t * ab).norm() < margin) return false;
+  }
+  return true;
+}
+
 bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
   const Vec3 point = tangent_point({p, q});
-  if (depth_inside(frame_, point) < options_.margin * frame_.size) return false;
+  if (!keeps_margin(p, q, point)) return false;
   out_.kind = FacePointKind::feature_point;
   out_.point = point;
   return true;

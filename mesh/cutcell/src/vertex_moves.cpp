@@ -61,6 +61,20 @@ Around around_vertex(const Grid& grid, Index v) {
   return out;
 }
 
+// x moved out across the tangent planes of these crossings (normals pointing out) to
+// `step` beyond each; nullopt unless they have at least two distinct normals.
+std::optional<Vec3> across_all(const Vec3& x, const std::vector<Crossing>& crossings, double step) {
+  std::vector<const Crossing*> planes;
+  for (const Crossing& c : crossings)
+    if (std::none_of(planes.begin(), planes.end(),
+                     [&c](const Crossing* p) { return p->normal.dot(c.normal) > 0.999; }))
+      planes.push_back(&c);
+  if (planes.size() < 2) return std::nullopt;
+  Vec3 p = x;
+  for (const Crossing* c : planes) p += ((c->point - x).dot(c->normal) + step) * c->normal;
+  return p;
+}
+
 struct Nearest {
   double fraction = 1.0;  // of the edge, from v
   Crossing crossing;
@@ -120,6 +134,7 @@ bool Mover::move(Index v) {
   const std::vector<Index>& ends = around.ends;
   const Vec3 x = grid_.position[v];
   Nearest nearest;
+  std::vector<Crossing> near_boundary;  // crossings into the outside within the clearance
   std::vector<double> far_before(ends.size(), 1.0);
   std::vector<std::size_t> crossings_before(ends.size(), 0);
   double shortest = std::numeric_limits<double>::infinity();
@@ -131,6 +146,7 @@ bool Mover::move(Index v) {
     far_before[k] = 1.0 - hits.back().t;
     crossings_before[k] = hits.size();
     if (grid_.region[ends[k]] == grid_.region[v]) continue;
+    if (hits.front().t < clearance_ && hits.front().after == 0) near_boundary.push_back(hits.front());
     if (!nearest.found || hits.front().t < nearest.fraction) nearest = {hits.front().t, hits.front(), true};
   }
   if (!nearest.found || nearest.fraction >= clearance_) return true;
@@ -146,7 +162,13 @@ bool Mover::move(Index v) {
   const Index own = grid_.region[v], other = nearest.crossing.after;
   const bool hanging = grid_.vertices.hanging[v] != 0;
   const double first = other == 0 && own != 0 && !hanging ? 1.0 : -1.0;
+  // Next to a sharp edge or corner of the boundary, out across all its faces at once, clear
+  // of each: out across one face only, the edge may end up in leaves whose corners all lie
+  // outside, and a diagonal step that only just crosses it leaves it in a corner of the
+  // leaves' faces, too close for a feature point; either way the edge is cut off.
   std::vector<Vec3> candidates{at + first * step * n, at - first * step * n};
+  if (first > 0.0)
+    if (const std::optional<Vec3> corner = across_all(x, near_boundary, step)) candidates.push_back(*corner);
   for (const double scale : {0.5, 2.0})
     for (const double side : {-1.0, 1.0}) candidates.push_back(at + side * scale * step * n);
   for (int axis = 0; axis < 3; ++axis)
