@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "geometric_error.hpp"
+#include "volmesh/core/geometry.hpp"
 #include "volmesh/domain/analytic_closest.hpp"
 
 namespace volmesh::geometry {
@@ -21,13 +22,6 @@ Vec3 to_local(const Primitive& primitive, const Vec3& p) {
   return primitive.frame.rotation.transpose() * (p - primitive.frame.translation);
 }
 
-// Distance from q to the segment between a and b.
-double segment_distance(const Vec3& q, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (q - (a + t * d)).norm();
-}
-
 double box_edges_distance(const Box& box, const Vec3& q) {
   double best = kInfinity;
   for (int axis = 0; axis < 3; ++axis) {
@@ -38,7 +32,7 @@ double box_edges_distance(const Box& box, const Vec3& q) {
       a[v] = (corner & 2) ? box.hi[v] : box.lo[v];
       Vec3 b = a;
       b[axis] = box.hi[axis];
-      best = std::min(best, segment_distance(q, a, b));
+      best = std::min(best, distance_to_segment(q, a, b));
     }
   }
   return best;

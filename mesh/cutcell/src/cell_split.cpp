@@ -269,10 +269,7 @@ bool Splitter::boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_bounda
 // cell: where it meets a sharp edge of the domain's boundary (a layer ending on the box's
 // edge), the link would cut the edge off; the junction point there is the cell point.
 bool Splitter::junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const {
-  const Vec3 &a = position_[face_points[0]], &b = position_[face_points[1]];
-  const Vec3 ab = b - a;
-  const double t = std::clamp((fitted - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-  return (fitted - (a + t * ab)).norm() > options_.bend * size_;
+  return distance_to_segment(fitted, position_[face_points[0]], position_[face_points[1]]) > options_.bend * size_;
 }
 
 // Components per pair of regions: cycles of surface segments, and paths between face

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "volmesh/core/geometry.hpp"
 #include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
@@ -159,10 +160,10 @@ bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   // The kept polygon's boundary runs from p to q when it lies after p, else from q to p.
   const int from = after != 0 ? p : q, to = after != 0 ? q : p;
   for (int i = from; i % n_ != to; ++i) {
-    const Vec3 a = at(i).position, b = at(i + 1).position;
-    const Vec3 ab = in_plane(b - a, frame_.normal), ap = in_plane(point - a, frame_.normal);
-    const double t = std::clamp(ap.dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-    if ((ap - t * ab).norm() < margin) return false;
+    const Vec3& a = at(i).position;
+    // In the face plane, relative to a.
+    const Vec3 p = in_plane(point - a, frame_.normal), b = in_plane(at(i + 1).position - a, frame_.normal);
+    if (distance_to_segment(p, Vec3::Zero(), b) < margin) return false;
   }
   return true;
 }

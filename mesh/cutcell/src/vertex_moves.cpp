@@ -162,10 +162,10 @@ bool Mover::move(Index v) {
   const Index own = grid_.region[v], other = nearest.crossing.after;
   const bool hanging = grid_.vertices.hanging[v] != 0;
   const double first = other == 0 && own != 0 && !hanging ? 1.0 : -1.0;
-  // Next to a sharp edge or corner of the boundary, out across all its faces at once, clear
-  // of each: out across one face only, the edge may end up in leaves whose corners all lie
-  // outside, and a diagonal step that only just crosses it leaves it in a corner of the
-  // leaves' faces, too close for a feature point; either way the edge is cut off.
+  // Next to a sharp edge or corner of the boundary, when the moves across the nearest face
+  // fail: out across all its faces at once, clear of each. The diagonal steps below may only
+  // just cross the edge and leave it in a corner of the leaves' faces, too close for a
+  // feature point, and the edge is cut off.
   std::vector<Vec3> candidates{at + first * step * n, at - first * step * n};
   if (first > 0.0)
     if (const std::optional<Vec3> corner = across_all(x, near_boundary, step)) candidates.push_back(*corner);

@@ -3,6 +3,7 @@
 // a face is decomposed into triangles around its vertex average, a cell into pyramids on
 // those triangles around an estimated centre. Both neighbours of a face use the same
 // decomposition, so cell volumes add up exactly to the domain volume.
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -39,6 +40,13 @@ MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces);
 // Signed volume of the tetrahedron (a, b, c, d): positive when det(b-a, c-a, d-a) > 0.
 inline double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+
+// Distance from p to the segment a-b.
+inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a, ap = p - a;
+  const double t = std::clamp(ap.dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (ap - t * ab).norm();
 }
 
 }  // namespace volmesh
