@@ -115,6 +115,7 @@ MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
                {"max_leaf_level", stats.max_leaf_level},
                {"interface_points", opt.interface_points},
                {"moved_vertices", stats.moved_vertices},
+               {"split_edges", stats.split_edges},
                {"feature_points", stats.feature_points},
                {"min_cell_volume_ratio", stats.min_cell_volume_ratio},
                {"max_skewness", stats.max_skewness},

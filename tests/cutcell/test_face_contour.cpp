@@ -121,6 +121,34 @@ TEST(FaceContour, HangingVertexStaysOnItsPolygon) {
   EXPECT_NEAR(polygon_area(p, low), 0.7, 1e-12);
 }
 
+// A junction beside side 1: the side is crossed twice (a plane, then a line cutting corner
+// 2 off), a vertex of the region between splits it. Each crossing keeps its own chord.
+TEST(FaceContour, SideCrossedTwiceKeepsBothCrossings) {
+  FaceInput f;
+  const auto vertex = [&f](const Vec3& p, Index region) { f.boundary.push_back({p, region, Vec3::Zero()}); };
+  const auto crossing = [&f](const Vec3& p, const Vec3& normal) { f.boundary.push_back({p, kNoIndex, normal}); };
+  f.corners = {0, 1, 5, 7};
+  vertex(kCorner[0], 0);
+  vertex(kCorner[1], 0);
+  crossing(Vec3(1, 0.3, 0), Vec3(0, 1, 0));  // into region 2 above the plane y = 0.3
+  vertex(Vec3(1, 0.5, 0), 2);                 // the split vertex
+  crossing(Vec3(1, 0.7, 0), Vec3(0.6, 0.8, 0));
+  vertex(kCorner[2], 3);
+  crossing(Vec3(0.6, 1, 0), Vec3(-0.6, -0.8, 0));
+  vertex(kCorner[3], 2);
+  crossing(Vec3(0, 0.3, 0), Vec3(0, -1, 0));
+  const FaceContour c = contour_face(f);
+  EXPECT_EQ(c.kind, FacePointKind::none);
+  ASSERT_EQ(c.segments.size(), 2u);
+  ASSERT_EQ(c.polygons.size(), 3u);
+  expect_partition(f, c);
+  const std::vector<Vec3> p = points_of(f, c);
+  EXPECT_NEAR(polygon_area(p, c.polygons[polygon_of_corner(f, c, 0)]), 0.3, 1e-12);
+  EXPECT_NEAR(polygon_area(p, c.polygons[polygon_of_corner(f, c, 2)]), 0.5 * 0.4 * 0.3, 1e-12);
+  const FacePolygon& middle = c.polygons[polygon_of_corner(f, c, 3)];
+  EXPECT_EQ(std::count(middle.points.begin(), middle.points.end(), 3), 1);
+}
+
 // Two regions on alternate corners: the tangent lines decide which corners connect.
 Square ambiguous_square(bool blobs_at_corners) {
   Square sq{{1, 2, 1, 2}, {}};

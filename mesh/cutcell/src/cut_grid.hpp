@@ -65,6 +65,11 @@ struct Grid {
   KeyMap edge_index;
   std::vector<std::uint8_t> edge_crossings;  // transversal crossings (touches left out)
   std::vector<EdgePoint> edge_point;         // meaningful where the end regions differ
+  // Per fine edge: the vertex splitting it between its two crossings, kNoIndex if none
+  // (split_doubly_crossed_edges). Such vertices follow the octree's in position and region;
+  // split_edge[x - vertices.num_vertices()] is the edge vertex x splits.
+  std::vector<Index> split_vertex;
+  std::vector<Index> split_edge;
 
   // Fine faces of the cut leaves; contours of those whose vertices lie in several regions.
   std::vector<FineFace> faces;
@@ -100,6 +105,14 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
 // the cell): its midpoint vertex takes the region of the edge's lower corner, so that every
 // side of a face holds at most one interface point. Returns the number of vertices relabelled.
 Index relabel_midpoints(Grid& grid);
+
+// Edges crossed exactly twice, from their lower end's region into a third and on into
+// their higher end's, the crossings at least min_gap of the edge apart: a vertex of the
+// third region between the crossings splits each into two edges crossed once (appended to
+// edges).
+void split_doubly_crossed_edges(Grid& grid, double min_gap);
+// The vertex v when it is a grid vertex, else the ends of the edge it splits.
+std::array<Index, 2> grid_vertex_ends(const Grid& grid, Index v);
 
 // Moves grid vertices whose nearest crossing lies within clearance * edge of them off the
 // interface: across it when that puts them outside the domain (the kept pieces grow),

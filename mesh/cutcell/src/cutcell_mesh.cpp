@@ -2,6 +2,7 @@
 // applies, the vertices moved off the interfaces, M3S per face, M3C per cut leaf, the mesh.
 #include <oneapi/tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -36,6 +37,8 @@ void check_options(const CutcellOptions& o) {
     throw InputError("cutcell: the extra refinement levels must not be negative");
   if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= 0.25))
     throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");
+  if (!(o.split_gap > 0.0 && o.split_gap <= 1.0))
+    throw InputError("cutcell: the split gap must lie in (0, 1]");
 }
 
 }  // namespace
@@ -46,7 +49,7 @@ namespace cutcell {
 // octree's refinement hook), recompute; then the grid of the final tree.
 Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& options,
                   CutcellStats& st) {
-  st.moved_vertices = st.unresolved_vertices = st.relabelled_vertices = 0;
+  st.moved_vertices = st.unresolved_vertices = st.relabelled_vertices = st.split_edges = 0;
   const auto progress = [&options](const char* stage, double fraction) {
     if (options.progress) options.progress(stage, fraction);
   };
@@ -87,8 +90,11 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
       classify_leaves(grid);
       find_edge_points(grid);
     }
+    if (settings.exact) split_doubly_crossed_edges(grid, options.split_gap);
     progress("face contours", 0.4);
     contour_faces(grid);
+    st.split_edges = static_cast<Index>(
+        std::count_if(grid.split_vertex.begin(), grid.split_vertex.end(), [](Index x) { return x != kNoIndex; }));
     if (const std::vector<Index> split = leaves_for_face_points(grid, face_level); !split.empty()) {
       split_leaves(tree, split);
       ++st.refinement_passes;

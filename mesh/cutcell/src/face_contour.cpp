@@ -95,7 +95,7 @@ class Contourer {
   const int n_;
   const Frame frame_;
   std::vector<int> crossing_;  // interface points in boundary order
-  std::array<int, 4> side_point_{-1, -1, -1, -1};  // the interface point of each side
+  std::array<std::vector<int>, 4> side_points_;  // the interface points of each side
   std::vector<int> partner_;   // chord partner of a boundary point, -1 if none
   std::vector<char> via_point_;  // the chord from this point passes through the face point
   FaceContour out_;
@@ -144,18 +144,19 @@ double Contourer::chord_agreement(int p, int q) const {
   return projected_normal(p).dot(right) - projected_normal(q).dot(right);
 }
 
-// Whether a feature point on the chord p -> q keeps the margin from the sides. On planes of
-// the domain's boundary parallel to the octree's faces only the kept polygon's sides count:
-// at a box's edge the point may lie deep in the corner of the face, beside the outside
-// corner alone (the box's faces just off the grid planes), and there the outside polygon's
-// sliver is dropped with it.
+// Whether a feature point on the chord p -> q keeps the margin from the sides. Where one of
+// the two boundary surfaces is a plane parallel to the octree's faces only the kept
+// polygon's sides count: at a box's edge or a cylinder's rim the point may lie deep in the
+// corner of the face, beside the outside corner alone (the plane just off a grid plane, its
+// vertices moved across it), and there the outside polygon's sliver is dropped with it. On
+// curved surfaces alone a tangent intersection that near a side is no feature (a torus's).
 bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   const double margin = options_.margin * frame_.size;
   const double depth = depth_inside(frame_, point);
   if (depth >= margin) return true;
   const Index before = region_before(p), after = region_after(p);
-  if (depth <= 0.0 || (before != 0 && after != 0) || !parallel_to_octree_faces(at(p).normal) ||
-      !parallel_to_octree_faces(at(q).normal))
+  if (depth <= 0.0 || (before != 0 && after != 0) ||
+      !(parallel_to_octree_faces(at(p).normal) || parallel_to_octree_faces(at(q).normal)))
     return false;
   // The kept polygon's boundary runs from p to q when it lies after p, else from q to p.
   const int from = after != 0 ? p : q, to = after != 0 ? q : p;
@@ -193,7 +194,7 @@ void Contourer::chord(int p, int q) {
   out_.segments.push_back({p, q, left, right});
 }
 
-// The side nearest p (in the face plane) and its interface point, -1 if it has none.
+// The side nearest p (in the face plane) and its interface point nearest p, -1 if it has none.
 int Contourer::nearest_side_point(const Vec3& p) const {
   int best = 0;
   double nearest = std::numeric_limits<double>::infinity();
@@ -205,7 +206,10 @@ int Contourer::nearest_side_point(const Vec3& p) const {
       best = k;
     }
   }
-  return side_point_[best];
+  int point = -1;
+  for (int i : side_points_[best])
+    if (point < 0 || (at(i).position - p).norm() < (at(point).position - p).norm()) point = i;
+  return point;
 }
 
 // The face interface point joined to every edge point. When the least-squares point lies at
@@ -284,33 +288,32 @@ void Contourer::walk_polygons() {
 }
 
 FaceContour Contourer::run() {
-  std::array<int, 4>& side_point = side_point_;
-  std::array<Index, 4> r{};
-  for (int k = 0; k < 4; ++k) r[k] = at(face_.corners[k]).region;
+  for (int i = 0; i < n_; ++i)
+    if (at(i).is_interface()) {
+      if (at(i - 1).is_interface() || at(i + 1).is_interface() || region_before(i) == region_after(i))
+        throw std::logic_error("contour_face: an interface point not between two regions");
+      crossing_.push_back(i);
+    } else if (!at(i + 1).is_interface() && at(i).region != region_after(i)) {
+      throw std::logic_error("contour_face: a change of region without its interface point");
+    }
   for (int k = 0; k < 4; ++k) {
     const int end = k == 3 ? face_.corners[0] + n_ : face_.corners[k + 1];
     for (int i = face_.corners[k] + 1; i < end; ++i)
-      if (at(i).is_interface()) {
-        if (side_point[k] >= 0 || r[k] == r[(k + 1) % 4])
-          throw std::logic_error("contour_face: side with a wrong number of interface points");
-        side_point[k] = i % n_;
-      }
-    if (side_point[k] < 0 && r[k] != r[(k + 1) % 4])
-      throw std::logic_error("contour_face: side without its interface point");
+      if (at(i).is_interface()) side_points_[k].push_back(i % n_);
   }
-  for (int k = 0; k < 4; ++k)
-    if (side_point[k] >= 0) crossing_.push_back(side_point[k]);
-  std::sort(crossing_.begin(), crossing_.end());
   partner_.assign(n_, -1);
   via_point_.assign(n_, 0);
 
-  std::vector<Index> distinct(r.begin(), r.end());
+  std::vector<Index> distinct;
+  for (int i = 0; i < n_; ++i)
+    if (!at(i).is_interface()) distinct.push_back(at(i).region);
   std::sort(distinct.begin(), distinct.end());
   const int regions = static_cast<int>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
   const int np = static_cast<int>(crossing_.size());
+  if (np > 4) throw std::logic_error("contour_face: more than four interface points");
 
   if (np == 0) {
-    FacePolygon poly{r[0], {}};
+    FacePolygon poly{at(0).region, {}};
     for (int i = 0; i < n_; ++i) poly.points.push_back(i);
     out_.polygons.push_back(std::move(poly));
     return std::move(out_);
@@ -319,27 +322,27 @@ FaceContour Contourer::run() {
     star();
     return std::move(out_);
   }
+  const std::vector<int>& c = crossing_;
   if (np == 2) {
-    chord(crossing_[0], crossing_[1]);
+    chord(c[0], c[1]);
   } else {
-    // Four interface points, two or three regions. Corner k lies between sides k-1 and k;
-    // cutting corners 0 and 2 pairs (side 3, side 0) and (side 1, side 2).
-    bool cut_even;
+    // Four interface points, two or three regions; arc k runs from point k to point k+1.
+    // Cutting arcs 3 and 1 off pairs (3, 0) and (1, 2).
+    const auto arc = [&](int k) { return region_after(c[k]); };
+    bool cut_odd_arcs;
     if (regions == 3) {
-      cut_even = r[1] == r[3];  // keep the equal diagonal connected
+      cut_odd_arcs = arc(0) == arc(2);  // keep the region of two opposite arcs connected
     } else {
-      const double even = chord_agreement(side_point[3], side_point[0]) +
-                          chord_agreement(side_point[1], side_point[2]);
-      const double odd = chord_agreement(side_point[0], side_point[1]) +
-                         chord_agreement(side_point[2], side_point[3]);
-      cut_even = even != odd ? even > odd : r[0] < r[1];  // tie: keep the higher label connected
+      const double even = chord_agreement(c[3], c[0]) + chord_agreement(c[1], c[2]);
+      const double odd = chord_agreement(c[0], c[1]) + chord_agreement(c[2], c[3]);
+      cut_odd_arcs = even != odd ? even > odd : arc(3) < arc(0);  // tie: keep the higher label connected
     }
-    if (cut_even) {
-      chord(side_point[3], side_point[0]);
-      chord(side_point[1], side_point[2]);
+    if (cut_odd_arcs) {
+      chord(c[3], c[0]);
+      chord(c[1], c[2]);
     } else {
-      chord(side_point[0], side_point[1]);
-      chord(side_point[2], side_point[3]);
+      chord(c[0], c[1]);
+      chord(c[2], c[3]);
     }
   }
   walk_polygons();

@@ -3,6 +3,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
+#include <numeric>
 #include <optional>
 
 #include "cut_grid.hpp"
@@ -54,17 +55,77 @@ std::optional<FaceResult> contour(const Grid& grid, const FineFace& face) {
     // leaf_face_loop lists corner k, then the midpoint of edge k if there is one.
     if (corner < 4 && u == grid.vertices.leaf_corners[face.leaf][kFaceCorners[face.face][corner]])
       input.corners[corner++] = static_cast<int>(input.boundary.size());
-    input.boundary.push_back({grid.position[u], grid.region[u], Vec3::Zero()});
-    result.boundary.push_back(u);
+    const auto add_vertex = [&](Index v) {
+      input.boundary.push_back({grid.position[v], grid.region[v], Vec3::Zero()});
+      result.boundary.push_back(v);
+    };
+    const auto add_edge_point = [&](Index from, Index to) {
+      const Index e = grid.find_edge(from, to);
+      const EdgePoint& p = grid.edge_point[e];
+      const Vec3 normal = grid.settings.exact && !p.exact ? Vec3::Zero() : p.normal;
+      input.boundary.push_back({p.point, kNoIndex, from < to ? normal : Vec3(-normal)});
+      result.boundary.push_back(kEdgeKey + e);
+    };
+    add_vertex(u);
     if (grid.region[u] == grid.region[w]) continue;
-    const Index e = grid.find_edge(u, w);
-    const EdgePoint& p = grid.edge_point[e];
-    const Vec3 normal = grid.settings.exact && !p.exact ? Vec3::Zero() : p.normal;
-    input.boundary.push_back({p.point, kNoIndex, u < w ? normal : Vec3(-normal)});
-    result.boundary.push_back(kEdgeKey + e);
+    if (const Index x = grid.split_vertex[grid.find_edge(u, w)]; x != kNoIndex) {
+      add_edge_point(u, x);
+      add_vertex(x);
+      add_edge_point(x, w);
+    } else {
+      add_edge_point(u, w);
+    }
   }
   result.contour = contour_face(input, grid.settings.face);
   return result;
+}
+
+// M3S takes at most four interface points on a face: the edges of a face that their split
+// vertices would give more are left whole. Counted before any is undone, so the result
+// does not depend on the order.
+void keep_faces_contourable(Grid& grid) {
+  if (grid.split_edge.empty()) return;
+  std::vector<std::uint8_t> too_many(grid.faces.size(), 0);
+  tbb::parallel_for(std::size_t{0}, grid.faces.size(), [&](std::size_t i) {
+    std::vector<Index> loop;
+    leaf_face_loop(grid.vertices, grid.faces[i].leaf, grid.faces[i].face, loop);
+    int points = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Index u = loop[k], w = loop[(k + 1) % loop.size()];
+      if (grid.region[u] != grid.region[w])
+        points += grid.split_vertex[grid.find_edge(u, w)] != kNoIndex ? 2 : 1;
+    }
+    too_many[i] = points > 4;
+  });
+  for (std::size_t i = 0; i < grid.faces.size(); ++i) {
+    if (!too_many[i]) continue;
+    std::vector<Index> loop;
+    leaf_face_loop(grid.vertices, grid.faces[i].leaf, grid.faces[i].face, loop);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Index u = loop[k], w = loop[(k + 1) % loop.size()];
+      if (grid.region[u] != grid.region[w]) grid.split_vertex[grid.find_edge(u, w)] = kNoIndex;
+    }
+  }
+}
+
+// Split vertices that a polygon of the contour holds with their two crossings alone.
+std::vector<PointKey> lens_vertices(const Grid& grid, const FaceResult& result) {
+  std::vector<PointKey> out;
+  const auto n = static_cast<int>(result.boundary.size());
+  const PointKey first_split = grid.vertices.num_vertices();
+  for (const FacePolygon& poly : result.contour.polygons) {
+    if (poly.points.size() != 3 || !std::all_of(poly.points.begin(), poly.points.end(), [n](int i) { return i < n; }))
+      continue;
+    for (int k = 0; k < 3; ++k) {
+      const PointKey x = result.boundary[poly.points[k]];
+      if (x < first_split || x >= kEdgeKey) continue;
+      const PointKey before = result.boundary[poly.points[(k + 2) % 3]], after = result.boundary[poly.points[(k + 1) % 3]];
+      const auto [a, b] = grid.edges[grid.split_edge[x - first_split]];
+      const PointKey ea = kEdgeKey + grid.find_edge(a, static_cast<Index>(x)), eb = kEdgeKey + grid.find_edge(b, static_cast<Index>(x));
+      if ((before == ea && after == eb) || (before == eb && after == ea)) out.push_back(x);
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -90,9 +151,30 @@ void contour_faces(Grid& grid) {
   for (std::size_t i = 0; i < grid.faces.size(); ++i)
     grid.face_index.insert(face_code(grid.faces[i].leaf, grid.faces[i].face), static_cast<Index>(i));
 
+  keep_faces_contourable(grid);
   std::vector<std::optional<FaceResult>> results(grid.faces.size());
-  tbb::parallel_for(std::size_t{0}, grid.faces.size(),
-                    [&](std::size_t i) { results[i] = contour(grid, grid.faces[i]); });
+  std::vector<std::size_t> todo(grid.faces.size());
+  std::iota(todo.begin(), todo.end(), std::size_t{0});
+  while (!todo.empty()) {
+    tbb::parallel_for(std::size_t{0}, todo.size(),
+                      [&](std::size_t k) { results[todo[k]] = contour(grid, grid.faces[todo[k]]); });
+    // A split vertex whose two crossings a face joins by a chord along the edge would leave
+    // a polygon of no area: that edge is left whole, its faces contoured again.
+    std::vector<PointKey> unsplit;
+    for (const std::size_t i : todo)
+      if (results[i])
+        for (const PointKey x : lens_vertices(grid, *results[i])) unsplit.push_back(x);
+    if (unsplit.empty()) break;
+    for (const PointKey x : unsplit)
+      grid.split_vertex[grid.split_edge[x - grid.vertices.num_vertices()]] = kNoIndex;
+    std::sort(unsplit.begin(), unsplit.end());
+    todo.clear();
+    for (std::size_t i = 0; i < results.size(); ++i)
+      if (results[i] && std::any_of(results[i]->boundary.begin(), results[i]->boundary.end(), [&](PointKey k) {
+            return std::binary_search(unsplit.begin(), unsplit.end(), k);
+          }))
+        todo.push_back(i);
+  }
   grid.face_result.assign(grid.faces.size(), kNoIndex);
   grid.results.clear();
   for (std::size_t i = 0; i < results.size(); ++i)

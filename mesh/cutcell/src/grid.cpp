@@ -100,6 +100,8 @@ void find_edge_points(Grid& grid) {
   }
   grid.edge_crossings.assign(ne, 0);
   grid.edge_point.assign(ne, EdgePoint{});
+  grid.split_vertex.assign(ne, kNoIndex);
+  grid.split_edge.clear();
 
   std::vector<Vec3> a, b;
   std::vector<std::vector<Crossing>> hits;

@@ -34,6 +34,11 @@ struct CutcellOptions {
   // Tiny cut cells: a grid vertex whose nearest crossing along an edge lies closer than
   // this fraction of the edge is moved off the interface (exact mode only).
   double vertex_clearance = 0.1;
+  // An edge still crossed twice at the deepest level, from its ends' regions into a third
+  // between, keeps both crossings (a vertex of the third region splits it) when they lie at
+  // least this fraction of the edge apart (exact mode only); nearer, the one crossing kept
+  // is off by less.
+  double split_gap = 0.2;
   // Cells that checkMesh would reject (skewness above skewness_limit, an inverted face
   // pyramid, non-orthogonality of 88° or more) or smaller than merge_volume_ratio * h^3
   // are merged with one or two neighbours of their region, and a rejected face may be
@@ -57,6 +62,7 @@ struct CutcellStats {
   Index unresolved_vertices = 0; // vertices left within the clearance (no valid move)
   Index relabelled_vertices = 0; // midpoints of leaf edges still crossed twice at the deepest
                                  // level, given their edge's region (a thinner layer is lost)
+  Index split_edges = 0;         // edges crossed twice kept so, split between the crossings
   Index face_point_fallbacks = 0, cell_point_fallbacks = 0;
   Index feature_points = 0;      // fans around EMC feature points
   Index feature_splits = 0;      // components split along a sharp edge

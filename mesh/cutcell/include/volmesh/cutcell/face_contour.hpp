@@ -9,8 +9,9 @@
 
 namespace volmesh::cutcell {
 
-// A point on the boundary of a face: a grid vertex (a corner, or a hanging vertex in the
-// middle of a side) or an edge interface point.
+// A point on the boundary of a face: a grid vertex (a corner, a hanging vertex in the
+// middle of a side, or a vertex splitting a side between its two crossings) or an edge
+// interface point.
 struct BoundaryPoint {
   Vec3 position = Vec3::Zero();
   Index region = kNoIndex;     // grid vertices: their region; interface points: kNoIndex
@@ -21,8 +22,9 @@ struct BoundaryPoint {
 };
 
 // The boundary of a face counter-clockwise about its normal (the right-hand normal of the
-// corners). Each side (corner k to corner k+1) holds at most one interface point, exactly
-// when its corners differ in region; two interface points are never adjacent.
+// corners). An interface point lies between two grid vertices of different regions, and
+// every change of region along the boundary has one; at most four in all. A side holds two
+// when a vertex between them splits it (an edge crossed twice).
 struct FaceInput {
   std::vector<BoundaryPoint> boundary;
   std::array<int, 4> corners{};  // positions of the corners in `boundary`, increasing
