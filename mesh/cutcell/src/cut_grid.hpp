@@ -51,6 +51,11 @@ struct GridSettings {
   CellOptions cell;
 };
 
+// The key of edge a-b in Grid::edge_index (and its sort order): the lower vertex first.
+inline std::uint64_t edge_key(Index a, Index b) {
+  return a < b ? std::uint64_t(a) << 32 | std::uint64_t(b) : std::uint64_t(b) << 32 | std::uint64_t(a);
+}
+
 struct Grid {
   const Octree* tree = nullptr;
   const Domain* domain = nullptr;
@@ -78,10 +83,7 @@ struct Grid {
   std::vector<FaceResult> results;
 
   double leaf_size(Index leaf) const { return tree->cell_size(tree->leaf(leaf).level); }
-  Index find_edge(Index a, Index b) const {
-    return edge_index.find(a < b ? std::uint64_t(a) << 32 | std::uint64_t(b)
-                                 : std::uint64_t(b) << 32 | std::uint64_t(a));
-  }
+  Index find_edge(Index a, Index b) const { return edge_index.find(edge_key(a, b)); }
 };
 
 // Vertices with their regions, the cut leaves.

@@ -9,13 +9,9 @@
 namespace volmesh::cutcell {
 namespace {
 
-std::uint64_t edge_code(Index a, Index b) {
-  return a < b ? std::uint64_t(a) << 32 | std::uint64_t(b) : std::uint64_t(b) << 32 | std::uint64_t(a);
-}
-
 // Appends the edge a-b (a < b) crossed once, at `point`, normal from a's region into b's.
 void add_edge(Grid& grid, Index a, Index b, const Vec3& point, const Vec3& normal) {
-  grid.edge_index.insert(edge_code(a, b), static_cast<Index>(grid.edges.size()));
+  grid.edge_index.insert(edge_key(a, b), static_cast<Index>(grid.edges.size()));
   grid.edges.push_back({a, b});
   grid.edge_crossings.push_back(1);
   grid.edge_point.push_back({point, normal, true});

@@ -80,6 +80,17 @@ std::optional<FaceResult> contour(const Grid& grid, const FineFace& face) {
   return result;
 }
 
+// The fine edges along a face whose ends lie in different regions.
+std::vector<Index> changing_edges(const Grid& grid, const FineFace& face) {
+  std::vector<Index> loop, out;
+  leaf_face_loop(grid.vertices, face.leaf, face.face, loop);
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Index u = loop[k], w = loop[(k + 1) % loop.size()];
+    if (grid.region[u] != grid.region[w]) out.push_back(grid.find_edge(u, w));
+  }
+  return out;
+}
+
 // M3S takes at most four interface points on a face: the edges of a face that their split
 // vertices would give more are left whole. Counted before any is undone, so the result
 // does not depend on the order.
@@ -87,42 +98,33 @@ void keep_faces_contourable(Grid& grid) {
   if (grid.split_edge.empty()) return;
   std::vector<std::uint8_t> too_many(grid.faces.size(), 0);
   tbb::parallel_for(std::size_t{0}, grid.faces.size(), [&](std::size_t i) {
-    std::vector<Index> loop;
-    leaf_face_loop(grid.vertices, grid.faces[i].leaf, grid.faces[i].face, loop);
     int points = 0;
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const Index u = loop[k], w = loop[(k + 1) % loop.size()];
-      if (grid.region[u] != grid.region[w])
-        points += grid.split_vertex[grid.find_edge(u, w)] != kNoIndex ? 2 : 1;
-    }
+    for (const Index e : changing_edges(grid, grid.faces[i])) points += grid.split_vertex[e] != kNoIndex ? 2 : 1;
     too_many[i] = points > 4;
   });
-  for (std::size_t i = 0; i < grid.faces.size(); ++i) {
-    if (!too_many[i]) continue;
-    std::vector<Index> loop;
-    leaf_face_loop(grid.vertices, grid.faces[i].leaf, grid.faces[i].face, loop);
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const Index u = loop[k], w = loop[(k + 1) % loop.size()];
-      if (grid.region[u] != grid.region[w]) grid.split_vertex[grid.find_edge(u, w)] = kNoIndex;
-    }
-  }
+  for (std::size_t i = 0; i < grid.faces.size(); ++i)
+    if (too_many[i])
+      for (const Index e : changing_edges(grid, grid.faces[i])) grid.split_vertex[e] = kNoIndex;
 }
 
 // Split vertices that a polygon of the contour holds with their two crossings alone.
 std::vector<PointKey> lens_vertices(const Grid& grid, const FaceResult& result) {
   std::vector<PointKey> out;
   const auto n = static_cast<int>(result.boundary.size());
-  const PointKey first_split = grid.vertices.num_vertices();
+  const Index first_split = grid.vertices.num_vertices();
   for (const FacePolygon& poly : result.contour.polygons) {
-    if (poly.points.size() != 3 || !std::all_of(poly.points.begin(), poly.points.end(), [n](int i) { return i < n; }))
+    if (poly.points.size() != 3 ||
+        !std::all_of(poly.points.begin(), poly.points.end(), [n](int i) { return i < n; }))
       continue;
     for (int k = 0; k < 3; ++k) {
       const PointKey x = result.boundary[poly.points[k]];
       if (x < first_split || x >= kEdgeKey) continue;
-      const PointKey before = result.boundary[poly.points[(k + 2) % 3]], after = result.boundary[poly.points[(k + 1) % 3]];
       const auto [a, b] = grid.edges[grid.split_edge[x - first_split]];
-      const PointKey ea = kEdgeKey + grid.find_edge(a, static_cast<Index>(x)), eb = kEdgeKey + grid.find_edge(b, static_cast<Index>(x));
-      if ((before == ea && after == eb) || (before == eb && after == ea)) out.push_back(x);
+      const PointKey to_a = kEdgeKey + grid.find_edge(a, static_cast<Index>(x));
+      const PointKey to_b = kEdgeKey + grid.find_edge(b, static_cast<Index>(x));
+      const PointKey before = result.boundary[poly.points[(k + 2) % 3]];
+      const PointKey after = result.boundary[poly.points[(k + 1) % 3]];
+      if ((before == to_a && after == to_b) || (before == to_b && after == to_a)) out.push_back(x);
     }
   }
   return out;
@@ -170,9 +172,9 @@ void contour_faces(Grid& grid) {
     std::sort(unsplit.begin(), unsplit.end());
     todo.clear();
     for (std::size_t i = 0; i < results.size(); ++i)
-      if (results[i] && std::any_of(results[i]->boundary.begin(), results[i]->boundary.end(), [&](PointKey k) {
-            return std::binary_search(unsplit.begin(), unsplit.end(), k);
-          }))
+      if (results[i] &&
+          std::any_of(results[i]->boundary.begin(), results[i]->boundary.end(),
+                      [&](PointKey k) { return std::binary_search(unsplit.begin(), unsplit.end(), k); }))
         todo.push_back(i);
   }
   grid.face_result.assign(grid.faces.size(), kNoIndex);

@@ -13,8 +13,6 @@ namespace {
 // Crossing queries are batched so that the crossing lists of one batch only are in memory.
 constexpr std::size_t kBatch = std::size_t{1} << 16;
 
-std::uint64_t edge_code(Index a, Index b) { return std::uint64_t(a) << 32 | std::uint64_t(b); }
-
 }  // namespace
 
 Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings) {
@@ -78,12 +76,11 @@ void find_edge_points(Grid& grid) {
     for (int e = 0; e < 12; ++e) {
       const Index a = v.leaf_corners[i][kEdgeCorners[e][0]], b = v.leaf_corners[i][kEdgeCorners[e][1]];
       const Index m = v.leaf_edge_mid[i][e];
-      const auto code = [](Index p, Index q) { return p < q ? edge_code(p, q) : edge_code(q, p); };
       if (m == kNoIndex) {
-        codes[24 * k + 2 * e] = code(a, b);
+        codes[24 * k + 2 * e] = edge_key(a, b);
       } else {
-        codes[24 * k + 2 * e] = code(a, m);
-        codes[24 * k + 2 * e + 1] = code(m, b);
+        codes[24 * k + 2 * e] = edge_key(a, m);
+        codes[24 * k + 2 * e + 1] = edge_key(m, b);
       }
     }
   });
