@@ -197,6 +197,32 @@ TEST(Octree, VerticesMatchBruteForce) {
     }
   }
   EXPECT_GT(mids, 0);
+  int centres = 0;
+  for (Index i = 0; i < tree.num_leaves(); ++i) {
+    const OctreeLeaf& l = tree.leaf(i);
+    for (int f = 0; f < 6; ++f) {
+      GridPoint centre = l.centre();
+      centre[f / 2] = l.anchor[f / 2] + (f & 1) * l.size();
+      const bool exists = l.size() > 1 && corners.count(morton_encode(centre)) > 0;
+      EXPECT_EQ(v.leaf_face_centre[i][f], exists ? v.find(centre) : kNoIndex) << i << " " << f;
+      centres += exists;
+    }
+  }
+  EXPECT_GT(centres, 0);
+}
+
+// The refinement passes of the cut cells rebuild the vertices of a refined tree: the regions
+// taken from the coarser tree's vertices are those a query gives.
+TEST(Octree, VerticesOfARefinedTreeReuseKnownRegions) {
+  Octree tree = balanced_random_tree(3);
+  const auto domain = make_builtin_domain("primitives");
+  const OctreeVertices before = octree_vertices(tree, *domain);
+  refine(tree, [](const Octree& t, Index i) { return i % 5 == 0 && t.leaf(i).level < 6; }, 6);
+  const OctreeVertices reused = octree_vertices(tree, *domain, before);
+  const OctreeVertices fresh = octree_vertices(tree, *domain);
+  ASSERT_GT(reused.num_vertices(), before.num_vertices());
+  EXPECT_EQ(reused.coords, fresh.coords);
+  EXPECT_EQ(reused.region, fresh.region);
 }
 
 TEST(Octree, FaceLoopsPointOutOfTheLeafAndListMidEdgeVertices) {

@@ -5,6 +5,7 @@
 // transition face: the face of the smaller leaf where sizes differ.
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "volmesh/cutcell/cell_split.hpp"
@@ -86,13 +87,28 @@ struct Grid {
   Index find_edge(Index a, Index b) const { return edge_index.find(edge_key(a, b)); }
 };
 
-// Vertices with their regions, the cut leaves.
-Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings);
+// find_edge_points' results for edges whose ends lie at their octree positions with their
+// own regions, by the ends' Morton codes: the passes of the extra refinement share most
+// edges, and the last pass after the vertex moves most of the rest.
+struct EdgeMemo {
+  using Key = std::pair<std::uint64_t, std::uint64_t>;
+  struct Entry {
+    Key key;
+    EdgePoint point;
+    std::uint8_t crossings = 0;
+  };
+  std::vector<Entry> entries;  // sorted by key
+};
+
+// Vertices with their regions (those `known` has taken from it), the cut leaves.
+Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings,
+               const OctreeVertices& known = {});
 // Every vertex on a leaf's boundary: corners, edge midpoints, centres of transition faces.
 void leaf_boundary_vertices(const Grid& grid, Index leaf, std::vector<Index>& out);
 void classify_leaves(Grid& grid);
-// Fine edges of the cut leaves and their interface points (crossings or midpoints).
-void find_edge_points(Grid& grid);
+// Fine edges of the cut leaves and their interface points (crossings or midpoints), taken
+// from the memo where it has them; the memo then holds this pass's.
+void find_edge_points(Grid& grid, EdgeMemo& memo);
 // Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
 // also covers an edge of a larger leaf whose midpoint lies in another region).
 std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);

@@ -64,10 +64,11 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
   const int face_level = std::min(kOctreeMaxLevel, level + options.face_point_levels);
 
   Grid grid;
+  EdgeMemo memo;
   for (;;) {
     progress("interface points", 0.2);
-    grid = make_grid(tree, domain, settings);
-    find_edge_points(grid);
+    grid = make_grid(tree, domain, settings, grid.vertices);
+    find_edge_points(grid, memo);
     // Both rules in one pass: each pass rebuilds the whole grid.
     std::vector<Index> split = leaves_crossed_twice(grid, crossing_level);
     if (settings.exact && options.vertex_clearance > 0.0) {
@@ -88,7 +89,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     }
     if (st.relabelled_vertices > 0 || st.moved_vertices > 0) {
       classify_leaves(grid);
-      find_edge_points(grid);
+      find_edge_points(grid, memo);
     }
     if (settings.exact) split_doubly_crossed_edges(grid, options.split_gap);
     progress("face contours", 0.4);

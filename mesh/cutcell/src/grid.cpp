@@ -15,12 +15,13 @@ constexpr std::size_t kBatch = std::size_t{1} << 16;
 
 }  // namespace
 
-Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings) {
+Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings,
+               const OctreeVertices& known) {
   Grid grid;
   grid.tree = &tree;
   grid.domain = &domain;
   grid.settings = settings;
-  grid.vertices = octree_vertices(tree, domain);
+  grid.vertices = octree_vertices(tree, domain, known);
   grid.position = grid.vertices.points;
   grid.region = grid.vertices.region;
   classify_leaves(grid);
@@ -32,13 +33,8 @@ void leaf_boundary_vertices(const Grid& grid, Index leaf, std::vector<Index>& ou
   for (Index c : v.leaf_corners[leaf]) out.push_back(c);
   for (Index m : v.leaf_edge_mid[leaf])
     if (m != kNoIndex) out.push_back(m);
-  const OctreeLeaf& l = grid.tree->leaf(leaf);
-  if (l.size() < 2) return;
-  for (int f = 0; f < 6; ++f) {
-    GridPoint p = l.centre();
-    p[f / 2] = l.anchor[f / 2] + (f & 1) * l.size();
-    if (const Index c = v.find(p); c != kNoIndex) out.push_back(c);
-  }
+  for (Index c : v.leaf_face_centre[leaf])
+    if (c != kNoIndex) out.push_back(c);
 }
 
 void classify_leaves(Grid& grid) {
@@ -64,7 +60,7 @@ int quarter_of(const OctreeLeaf& small, const OctreeLeaf& big, int axis) {
                           2 * ((small.anchor[hi] - big.anchor[hi]) / s));
 }
 
-void find_edge_points(Grid& grid) {
+void find_edge_points(Grid& grid, EdgeMemo& memo) {
   const Octree& tree = *grid.tree;
   const OctreeVertices& v = grid.vertices;
   std::vector<Index> cut_leaves;
@@ -100,19 +96,44 @@ void find_edge_points(Grid& grid) {
   grid.split_vertex.assign(ne, kNoIndex);
   grid.split_edge.clear();
 
+  // Edges whose ends sit at their octree positions with their own regions were most likely
+  // met in an earlier pass: their results are taken from the memo, the rest are queried.
+  enum : std::uint8_t { moved, nominal, known };
+  const auto at_home = [&grid, &v](Index x) {
+    return grid.position[x] == v.points[x] && grid.region[x] == v.region[x];
+  };
+  std::vector<EdgeMemo::Key> keys(ne);
+  std::vector<std::uint8_t> state(ne, moved);
+  const auto before = [](const EdgeMemo::Entry& x, const EdgeMemo::Key& k) { return x.key < k; };
+  tbb::parallel_for(std::size_t{0}, ne, [&](std::size_t e) {
+    const auto [p, q] = grid.edges[e];
+    if (!at_home(p) || !at_home(q)) return;
+    keys[e] = {morton_encode(v.coords[p]), morton_encode(v.coords[q])};
+    state[e] = nominal;
+    const auto it = std::lower_bound(memo.entries.begin(), memo.entries.end(), keys[e], before);
+    if (it == memo.entries.end() || it->key != keys[e]) return;
+    grid.edge_point[e] = it->point;
+    grid.edge_crossings[e] = it->crossings;
+    state[e] = known;
+  });
+  std::vector<std::size_t> todo;
+  for (std::size_t e = 0; e < ne; ++e)
+    if (state[e] != known) todo.push_back(e);
+
   std::vector<Vec3> a, b;
   std::vector<std::vector<Crossing>> hits;
-  for (std::size_t start = 0; start < ne; start += kBatch) {
-    const std::size_t end = std::min(ne, start + kBatch);
+  for (std::size_t start = 0; start < todo.size(); start += kBatch) {
+    const std::size_t end = std::min(todo.size(), start + kBatch);
     a.resize(end - start);
     b.resize(end - start);
-    for (std::size_t e = start; e < end; ++e) {
-      a[e - start] = grid.position[grid.edges[e][0]];
-      b[e - start] = grid.position[grid.edges[e][1]];
+    for (std::size_t k = start; k < end; ++k) {
+      a[k - start] = grid.position[grid.edges[todo[k]][0]];
+      b[k - start] = grid.position[grid.edges[todo[k]][1]];
     }
     grid.domain->crossings(a, b, hits);
-    tbb::parallel_for(start, end, [&](std::size_t e) {
-      const std::vector<Crossing>& h = hits[e - start];
+    tbb::parallel_for(start, end, [&](std::size_t k) {
+      const std::size_t e = todo[k];
+      const std::vector<Crossing>& h = hits[k - start];
       const Index ra = grid.region[grid.edges[e][0]], rb = grid.region[grid.edges[e][1]];
       // The point is the first crossing out of ra, unless an end lies outside the domain
       // behind a boundary plane parallel to the octree's faces (a box): then the crossing
@@ -133,7 +154,7 @@ void find_edge_points(Grid& grid) {
       }
       grid.edge_crossings[e] = static_cast<std::uint8_t>(std::min(transversal, 255));
       if (ra == rb) return;
-      const Vec3 &pa = a[e - start], &pb = b[e - start];
+      const Vec3 &pa = a[k - start], &pb = b[k - start];
       EdgePoint& point = grid.edge_point[e];
       if (grid.settings.exact && chosen) {
         point.point = chosen->point;
@@ -146,6 +167,12 @@ void find_edge_points(Grid& grid) {
       }
     });
   }
+  // Vertex numbers follow the Morton order, so the edges, sorted by their ends' numbers,
+  // come sorted by their ends' codes.
+  std::vector<EdgeMemo::Entry> entries;
+  for (std::size_t e = 0; e < ne; ++e)
+    if (state[e] != moved) entries.push_back({keys[e], grid.edge_point[e], grid.edge_crossings[e]});
+  memo.entries = std::move(entries);
 }
 
 std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level) {
@@ -180,11 +207,9 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
   std::vector<Vec3> from, to;
   for (Index i = 0; i < tree.num_leaves(); ++i) {
     const OctreeLeaf& l = tree.leaf(i);
-    if (!grid.cut[i] || l.level >= max_level || l.size() < 2) continue;
+    if (!grid.cut[i] || l.level >= max_level) continue;
     for (int f = 0; f < 6; ++f) {
-      GridPoint c = l.centre();
-      c[f / 2] = l.anchor[f / 2] + (f & 1) * l.size();
-      if (const Index centre = v.find(c); centre != kNoIndex) {
+      if (const Index centre = v.leaf_face_centre[i][f]; centre != kNoIndex) {
         owner.push_back(i);
         from.push_back(v.points[centre]);
         to.push_back(v.points[centre] + (f & 1 ? -1.0 : 1.0) * grid.leaf_size(i) * Vec3::Unit(f / 2));

@@ -14,7 +14,7 @@ namespace volmesh {
 namespace {
 
 // Marks vertex `id` at p hanging when it lies inside an edge or a face of a leaf, and records
-// it as that leaf's mid-edge vertex. On a balanced tree such a leaf is one level coarser than
+// it as that leaf's mid-edge or face-centre vertex. On a balanced tree such a leaf is one level coarser than
 // the finest grid p lies on, and p is the midpoint of its edge (one coordinate off that
 // coarser grid) or the centre of its face (two), so a few lookups around p settle it.
 void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVertices& v) {
@@ -54,10 +54,13 @@ void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVer
     }
   } else {  // the centre of a face normal to `axis`, shared by two coarser cells
     const int axis = !off[0] ? 0 : !off[1] ? 1 : 2;
-    for (int side = 0; side < 2; ++side) {
+    for (int side = 0; side < 2; ++side) {  // the face is the cell's low side, then its high
       std::array<std::int64_t, 3> anchor{p[0] - half, p[1] - half, p[2] - half};
       anchor[axis] = p[axis] - side * big;
-      hanging = hanging || leaf_at(anchor) != kNoIndex;
+      const Index leaf = leaf_at(anchor);
+      if (leaf == kNoIndex) continue;
+      v.leaf_face_centre[leaf][2 * axis + side] = id;
+      hanging = true;
     }
   }
   v.hanging[id] = hanging;
@@ -153,8 +156,12 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
   std::array<Index, 12> none;
   none.fill(kNoIndex);
   v.leaf_edge_mid.assign(n, none);
+  std::array<Index, 6> no_centre;
+  no_centre.fill(kNoIndex);
+  v.leaf_face_centre.assign(n, no_centre);
   v.hanging.assign(nv, 0);
-  // Each (leaf, edge) has one midpoint, so no two vertices write the same entry. A vertex
+  // Each (leaf, edge) has one midpoint and each (leaf, face) one centre, so no two vertices
+  // write the same entry. A vertex
   // that is a corner of every leaf around it (of 2^k, k its coordinates inside the root)
   // lies inside no leaf's edge or face: only the others are looked at.
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
@@ -165,10 +172,25 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
   return v;
 }
 
-OctreeVertices octree_vertices(const Octree& tree, const Domain& domain) {
+OctreeVertices octree_vertices(const Octree& tree, const Domain& domain, const OctreeVertices& known) {
   OctreeVertices v = octree_vertex_geometry(tree);
-  v.region.resize(v.points.size());
-  domain.region(v.points, v.region);
+  const std::size_t nv = v.points.size();
+  v.region.resize(nv);
+  std::vector<Index> old(nv, kNoIndex);
+  if (known.num_vertices() > 0)
+    tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) { old[i] = known.find(v.coords[i]); });
+  std::vector<std::size_t> missing;
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < nv; ++i)
+    if (old[i] == kNoIndex) {
+      missing.push_back(i);
+      points.push_back(v.points[i]);
+    } else {
+      v.region[i] = known.region[old[i]];
+    }
+  std::vector<Index> regions(points.size());
+  domain.region(points, regions);
+  for (std::size_t k = 0; k < missing.size(); ++k) v.region[missing[k]] = regions[k];
   return v;
 }
 

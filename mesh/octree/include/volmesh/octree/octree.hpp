@@ -200,7 +200,8 @@ struct OctreeOptions {
 Octree build_octree(const Domain& domain, const OctreeOptions& options);
 
 // The mesh vertices of a 2:1 balanced tree (as build_octree, balance and refine leave it):
-// every leaf corner, once. `hanging` and `leaf_edge_mid` rely on the balance.
+// every leaf corner, once. `hanging`, `leaf_edge_mid` and `leaf_face_centre` rely on the
+// balance.
 struct OctreeVertices {
   std::vector<GridPoint> coords;    // Morton order
   std::vector<Vec3> points;         // world coordinates
@@ -209,13 +210,17 @@ struct OctreeVertices {
   std::vector<std::array<Index, 8>> leaf_corners;    // per leaf, corner numbering above
   std::vector<std::array<Index, 12>> leaf_edge_mid;  // the vertex at an edge's midpoint, or
                                                      // kNoIndex (at most one: 2:1 balance)
+  std::vector<std::array<Index, 6>> leaf_face_centre;  // the vertex at a face's centre (a
+                                                       // finer neighbour), or kNoIndex
   KeyMap by_code;                   // morton_encode(coords) -> vertex
 
   Index num_vertices() const { return static_cast<Index>(coords.size()); }
   Index find(const GridPoint& p) const { return by_code.find(morton_encode(p)); }
 };
-// Throws InputError when the vertex count exceeds Index.
-OctreeVertices octree_vertices(const Octree& tree, const Domain& domain);
+// Throws InputError when the vertex count exceeds Index. The regions of vertices `known`
+// has (those of the tree before a refinement) are taken from it; only the others are queried.
+OctreeVertices octree_vertices(const Octree& tree, const Domain& domain,
+                               const OctreeVertices& known = {});
 
 // The vertex loop of a leaf face, oriented out of the leaf: its four corners with the
 // mid-edge vertex inserted on each edge that has one, so the loop lists every mesh vertex on
