@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <bit>
+#include <numeric>
 #include <string>
 
 #include "vertex_table.hpp"
 #include "volmesh/core/errors.hpp"
 
 namespace volmesh {
-
-namespace {
 
 // Marks vertex `id` at p hanging when it lies inside an edge or a face of a leaf, and records
 // it as that leaf's mid-edge or face-centre vertex. On a balanced tree such a leaf is one level coarser than
@@ -65,8 +64,6 @@ void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVer
   }
   v.hanging[id] = hanging;
 }
-
-}  // namespace
 
 OctreeVertices octree_vertex_geometry(const Octree& tree) {
   const std::size_t n = tree.leaves().size();
@@ -150,8 +147,6 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
     v.coords[i] = morton_decode(codes[i]);
     v.points[i] = tree.world(v.coords[i]);
   });
-  v.by_code.reserve(nv);
-  for (std::size_t i = 0; i < nv; ++i) v.by_code.insert(codes[i], static_cast<Index>(i));
 
   std::array<Index, 12> none;
   none.fill(kNoIndex);
@@ -169,28 +164,26 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
     for (const std::uint32_t x : v.coords[i]) around <<= (x != 0 && x != kOctreeGrid);
     if (corner_of[i] < around) classify_vertex(tree, static_cast<Index>(i), v.coords[i], v);
   });
+  v.codes = std::move(codes);
   return v;
 }
 
 OctreeVertices octree_vertices(const Octree& tree, const Domain& domain, const OctreeVertices& known) {
-  OctreeVertices v = octree_vertex_geometry(tree);
-  const std::size_t nv = v.points.size();
-  v.region.resize(nv);
-  std::vector<Index> old(nv, kNoIndex);
-  if (known.num_vertices() > 0)
-    tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) { old[i] = known.find(v.coords[i]); });
-  std::vector<std::size_t> missing;
-  std::vector<Vec3> points;
-  for (std::size_t i = 0; i < nv; ++i)
-    if (old[i] == kNoIndex) {
-      missing.push_back(i);
-      points.push_back(v.points[i]);
-    } else {
-      v.region[i] = known.region[old[i]];
-    }
-  std::vector<Index> regions(points.size());
+  std::vector<Index> fresh;  // vertices whose regions are to be queried
+  OctreeVertices v;
+  if (known.num_vertices() == 0) {
+    v = octree_vertex_geometry(tree);
+    v.region.resize(v.points.size());
+    fresh.resize(v.points.size());
+    std::iota(fresh.begin(), fresh.end(), Index{0});
+  } else {
+    v = refined_vertex_geometry(tree, known, fresh);
+  }
+  std::vector<Vec3> points(fresh.size());
+  for (std::size_t k = 0; k < fresh.size(); ++k) points[k] = v.points[fresh[k]];
+  std::vector<Index> regions(fresh.size());
   domain.region(points, regions);
-  for (std::size_t k = 0; k < missing.size(); ++k) v.region[missing[k]] = regions[k];
+  for (std::size_t k = 0; k < fresh.size(); ++k) v.region[fresh[k]] = regions[k];
   return v;
 }
 

@@ -19,6 +19,7 @@
 // on the first lookup after a change); containment of an arbitrary point uses binary search
 // on the Morton order (O(log n)).
 // Const member functions are thread-safe.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -212,13 +213,18 @@ struct OctreeVertices {
                                                      // kNoIndex (at most one: 2:1 balance)
   std::vector<std::array<Index, 6>> leaf_face_centre;  // the vertex at a face's centre (a
                                                        // finer neighbour), or kNoIndex
-  KeyMap by_code;                   // morton_encode(coords) -> vertex
+  std::vector<std::uint64_t> codes;  // morton_encode(coords), increasing
 
   Index num_vertices() const { return static_cast<Index>(coords.size()); }
-  Index find(const GridPoint& p) const { return by_code.find(morton_encode(p)); }
+  Index find(const GridPoint& p) const {
+    const std::uint64_t code = morton_encode(p);
+    const auto it = std::lower_bound(codes.begin(), codes.end(), code);
+    return it != codes.end() && *it == code ? static_cast<Index>(it - codes.begin()) : kNoIndex;
+  }
 };
-// Throws InputError when the vertex count exceeds Index. The regions of vertices `known`
-// has (those of the tree before a refinement) are taken from it; only the others are queried.
+// Throws InputError when the vertex count exceeds Index. With `known`, the vertices of this
+// tree before a refinement (leaves split, none merged), the table is updated around the new
+// leaves instead of rebuilt, and only the new vertices' regions are queried.
 OctreeVertices octree_vertices(const Octree& tree, const Domain& domain,
                                const OctreeVertices& known = {});
 
