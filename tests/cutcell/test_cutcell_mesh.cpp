@@ -51,12 +51,16 @@ double margin_for_offset(int level, double offset) {
 }
 
 // Faces passing a few hundredths of a cell from the grid planes: every grid vertex along them
-// is moved off. Those next to the box's edges and corners must go out across every face near
+// is moved off. Those next to the box's edges and corners must go out across the faces near
 // them, and the edge and corner points must stay on the box (not be pushed a margin into the
-// faces and cells); before, 5% of the cube was cut off along its edges.
+// faces and cells); before, 5% of the cube was cut off along its edges. With the faces just
+// inside the grid vertices (negative offsets), a vertex by a corner went out across all three
+// faces, warping its leaves' faces across the third, and the corner lay 1e-4 off (volume
+// 1 + 3.2e-4, 1 - 1.1e-4, 1 - 1.5e-4); it now goes out across two, and the corner is the fan
+// centre of its cell instead of snapping to the face point on its vertical edge.
 TEST(CutcellMesh, BoxFacesNearGridPlanesKeepEdgesAndCorners) {
   const auto box = make_builtin_domain("box");
-  for (const double offset : {0.01, 0.02, 0.03}) {
+  for (const double offset : {0.01, 0.02, 0.03, -0.05, -0.07, -0.09}) {
     CutcellOptions options;
     options.octree.level = 3;
     options.octree.margin = margin_for_offset(3, offset);

@@ -114,6 +114,7 @@ class Splitter {
   void split_along_feature(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
   void smooth_candidates(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
   int face_point_near(const Loop& loop, const Vec3& p) const;
+  bool on_octree_planes(std::span<const Vec3> s, std::span<const Vec3> n, const Vec3& p) const;
   void build_pieces();
   // The pieces on the lower and the higher label's side of a component.
   std::pair<int, int> loop_pieces(const Loop& loop) const {
@@ -193,6 +194,13 @@ std::pair<std::vector<Vec3>, std::vector<Vec3>> Splitter::boundary_planes(const 
   return out;
 }
 
+// Whether p lies on every plane through s with normal n, all parallel to the octree's faces.
+bool Splitter::on_octree_planes(std::span<const Vec3> s, std::span<const Vec3> n, const Vec3& p) const {
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!parallel_to_octree_faces(n[i]) || std::abs(n[i].dot(p - s[i])) > 1e-9 * size_) return false;
+  return !s.empty();
+}
+
 // clamp() keeping the centre of a fan over a component on the domain's boundary on the
 // component's tangent planes (through its fitted points s with normals n, at most max_rank
 // of them), unless that turns a fan triangle over: a centre moved onto a sharp edge beyond
@@ -207,12 +215,7 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
   // which is dropped, lies between it and the faces it is near, and pushed in it would cut
   // the corner off. As in onto_planes, it may lie as far as the junction margin outside the
   // mean planes of faces warped by vertex moves.
-  const auto on_box_planes = [&] {
-    for (std::size_t i = 0; i < s.size(); ++i)
-      if (!parallel_to_octree_faces(n[i]) || std::abs(n[i].dot(p - s[i])) > 1e-9 * size_) return false;
-    return !s.empty();
-  };
-  const Vec3 r = depth_inside_cell(in_.corners, p) > -options_.junction_margin * size_ && on_box_planes()
+  const Vec3 r = depth_inside_cell(in_.corners, p) > -options_.junction_margin * size_ && on_octree_planes(s, n, p)
                      ? p
                      : onto_planes(s, n, *q, options_.margin * size_, max_rank);
   for (std::size_t k = 0; k < loop.size(); ++k) {
@@ -395,7 +398,9 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
         if (!feature->corner) split_along_feature(loop.points, on_boundary, out);
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
-        if (const int on_face = face_point_near(loop, feature->point); on_face >= 0)
+        // Not a box's corner, which the face's point on one of its edges would cut off.
+        const bool box_corner = feature->corner && on_boundary && on_octree_planes(s, n, feature->point);
+        if (const int on_face = box_corner ? -1 : face_point_near(loop, feature->point); on_face >= 0)
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
         else if (const auto p = clamp_component(loop.points, s, n, on_boundary, feature->point,
                                                 options_.feature_reach, feature->corner ? 3 : 2))

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 
 #include "cut_grid.hpp"
 
@@ -61,18 +62,27 @@ Around around_vertex(const Grid& grid, Index v) {
   return out;
 }
 
-// x moved out across the tangent planes of these crossings (normals pointing out) to
-// `step` beyond each; nullopt unless they have at least two distinct normals.
-std::optional<Vec3> across_all(const Vec3& x, const std::vector<Crossing>& crossings, double step) {
+// x moved out across the tangent planes of these crossings (normals pointing out), to `step`
+// beyond each: across every pair of distinct planes, then across all of them when there are
+// more (a box's corner: across two faces the vertex is already outside, and its leaves' faces
+// stay clear of the third). None unless there are two distinct normals.
+std::vector<Vec3> across_planes(const Vec3& x, const std::vector<Crossing>& crossings, double step) {
   std::vector<const Crossing*> planes;
   for (const Crossing& c : crossings)
     if (std::none_of(planes.begin(), planes.end(),
                      [&c](const Crossing* p) { return p->normal.dot(c.normal) > 0.999; }))
       planes.push_back(&c);
-  if (planes.size() < 2) return std::nullopt;
-  Vec3 p = x;
-  for (const Crossing* c : planes) p += ((c->point - x).dot(c->normal) + step) * c->normal;
-  return p;
+  const auto across = [&x, step](std::span<const Crossing* const> set) {
+    Vec3 p = x;
+    for (const Crossing* c : set) p += ((c->point - x).dot(c->normal) + step) * c->normal;
+    return p;
+  };
+  std::vector<Vec3> out;
+  if (planes.size() < 2) return out;
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    for (std::size_t j = i + 1; j < planes.size(); ++j) out.push_back(across(std::array{planes[i], planes[j]}));
+  if (planes.size() > 2) out.push_back(across(planes));
+  return out;
 }
 
 struct Nearest {
@@ -168,7 +178,7 @@ bool Mover::move(Index v) {
   // feature point, and the edge is cut off.
   std::vector<Vec3> candidates{at + first * step * n, at - first * step * n};
   if (first > 0.0)
-    if (const std::optional<Vec3> corner = across_all(x, near_boundary, step)) candidates.push_back(*corner);
+    for (const Vec3& p : across_planes(x, near_boundary, step)) candidates.push_back(p);
   for (const double scale : {0.5, 2.0})
     for (const double side : {-1.0, 1.0}) candidates.push_back(at + side * scale * step * n);
   for (int axis = 0; axis < 3; ++axis)
