@@ -149,6 +149,26 @@ TEST(FaceContour, SideCrossedTwiceKeepsBothCrossings) {
   EXPECT_EQ(std::count(middle.points.begin(), middle.points.end(), 3), 1);
 }
 
+// A CAD part's sharp edge (fandisk's) running along a side, just inside or just outside it
+// (the vertex moves put it there): the feature point is kept on the kept polygon, pulled just
+// inside the face when it lies beyond. Refused, the chord cut the edge off by half a cell.
+TEST(FaceContour, SharpEdgeAlongASideKeepsItsFeaturePoint) {
+  for (const double offset : {5e-4, -5e-4}) {
+    // Line b through (0.2, offset) with slope 0.05 (region 1 above), line a perpendicular.
+    const Vec3 corner(0.2, offset, 0.0), along(1.0, 0.05, 0.0);
+    const Vec3 across = Vec3(-0.05, 1.0, 0.0).normalized();
+    Square sq{{0, 0, 1, 0}, {}};
+    sq.side[1] = {{corner + 0.8 * along, across}};
+    sq.side[2] = {{corner + (1.0 - offset) * Vec3(-0.05, 1.0, 0.0), -along.normalized()}};
+    const FaceInput f = make_face(sq);
+    const FaceContour c = contour_face(f);
+    ASSERT_EQ(c.kind, FacePointKind::feature_point) << offset;
+    EXPECT_NEAR(c.point.x(), 0.2, 2e-3) << offset;
+    EXPECT_NEAR(c.point.y(), std::max(offset, 1e-3), 1e-4) << offset;
+    expect_partition(f, c);
+  }
+}
+
 // Two regions on alternate corners: the tangent lines decide which corners connect.
 Square ambiguous_square(bool blobs_at_corners) {
   Square sq{{1, 2, 1, 2}, {}};

@@ -16,6 +16,12 @@
 namespace volmesh::cutcell {
 namespace {
 
+// Two surfaces whose normals' cosine is below this in magnitude meet at a sharp edge.
+constexpr double kRightAngle = 0.5;
+// A feature point within 10 times this fraction of the side outside its face, or less than
+// it inside, is moved to this depth.
+constexpr double kSideSlack = 1e-3;
+
 struct Frame {
   Vec3 centre, normal;
   std::array<Vec3, 4> corner;
@@ -144,20 +150,22 @@ double Contourer::chord_agreement(int p, int q) const {
   return projected_normal(p).dot(right) - projected_normal(q).dot(right);
 }
 
-// Whether a feature point on the chord p -> q keeps the margin from the sides. Where one of
-// the two boundary surfaces is a plane parallel to the octree's faces only the kept
-// polygon's sides count: at a box's edge or a cylinder's rim the point may lie deep in the
-// corner of the face, beside the outside corner alone (the plane just off a grid plane, its
-// vertices moved across it), and there the outside polygon's sliver is dropped with it. On
-// curved surfaces alone a tangent intersection that near a side is no feature (a torus's).
+// Whether a feature point on the chord p -> q keeps the margin from the sides. At a sharp
+// edge of the domain's boundary only the kept polygon's sides count: the point may lie deep
+// in the corner of the face, beside the outside corner alone (a box's face just off a grid
+// plane, its vertices moved across it), or along a side (an edge of a CAD part, fandisk's,
+// that the vertex moves put on the side), and there the outside polygon's sliver is dropped
+// with it. A sharp edge here: one surface is a plane parallel to the octree's faces, or the
+// two meet at nearly a right angle. On a curved surface a tangent intersection that near a
+// side is no feature (a torus's).
 bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   const double margin = options_.margin * frame_.size;
   const double depth = depth_inside(frame_, point);
   if (depth >= margin) return true;
   const Index before = region_before(p), after = region_after(p);
-  if (depth <= 0.0 || (before != 0 && after != 0) ||
-      !(parallel_to_octree_faces(at(p).normal) || parallel_to_octree_faces(at(q).normal)))
-    return false;
+  const bool sharp = parallel_to_octree_faces(at(p).normal) || parallel_to_octree_faces(at(q).normal) ||
+                     std::abs(at(p).normal.dot(at(q).normal)) < kRightAngle;
+  if (depth <= 0.0 || (before != 0 && after != 0) || !sharp) return false;
   // The kept polygon's boundary runs from p to q when it lies after p, else from q to p.
   const int from = after != 0 ? p : q, to = after != 0 ? q : p;
   for (int i = from; i % n_ != to; ++i) {
@@ -173,7 +181,11 @@ bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
-  const Vec3 point = tangent_point({p, q});
+  Vec3 point = tangent_point({p, q});
+  // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
+  // just beyond: pulled just inside, it keeps the face's polygons apart.
+  const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;
+  if (depth < slack && depth > -10.0 * slack) point = *clamp_into(frame_, point, slack, 10.0 * slack);
   if (!keeps_margin(p, q, point)) return false;
   out_.kind = FacePointKind::feature_point;
   out_.point = point;
