@@ -72,8 +72,8 @@ struct Grid {
   std::vector<std::uint8_t> edge_crossings;  // transversal crossings (touches left out)
   std::vector<EdgePoint> edge_point;         // meaningful where the end regions differ
   // Per fine edge: the vertex splitting it between its two crossings, kNoIndex if none
-  // (split_doubly_crossed_edges). Such vertices follow the octree's in position and region;
-  // split_edge[x - vertices.num_vertices()] is the edge vertex x splits.
+  // (split_doubly_crossed_edges). Such vertices are numbered after the octree's (in position
+  // and region); split_edge[x - vertices.num_vertices()] is the edge vertex x splits.
   std::vector<Index> split_vertex;
   std::vector<Index> split_edge;
 
@@ -100,7 +100,7 @@ struct EdgeMemo {
   std::vector<Entry> entries;  // sorted by key
 };
 
-// Vertices with their regions (those `known` has taken from it), the cut leaves.
+// Vertices with their regions (taken from `known` where it has them), the cut leaves.
 Grid make_grid(const Octree& tree, const Domain& domain, const GridSettings& settings,
                const OctreeVertices& known = {});
 // Every vertex on a leaf's boundary: corners, edge midpoints, centres of transition faces.
