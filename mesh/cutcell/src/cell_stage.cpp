@@ -24,15 +24,15 @@ class LeafInput {
  private:
   // The leaf's faces through grid vertex v; through both ends of the edge a split vertex splits.
   std::uint8_t vertex_faces(Index v) const {
-    std::uint8_t bits = 0x3f;
-    for (const Index end : grid_vertex_ends(grid_, v)) {
-      const GridPoint& c = grid_.vertices.coords[end];
-      std::uint8_t on = 0;
-      for (int k = 0; k < 3; ++k) {
-        if (c[k] == leaf_.anchor[k]) on |= 1 << (2 * k);
-        if (c[k] == leaf_.anchor[k] + leaf_.size()) on |= 1 << (2 * k + 1);
-      }
-      bits &= on;
+    const auto [a, b] = grid_vertex_ends(grid_, v);
+    return a == b ? octree_vertex_faces(a) : octree_vertex_faces(a) & octree_vertex_faces(b);
+  }
+  std::uint8_t octree_vertex_faces(Index v) const {
+    const GridPoint& c = grid_.vertices.coords[v];
+    std::uint8_t bits = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (c[k] == leaf_.anchor[k]) bits |= 1 << (2 * k);
+      if (c[k] == leaf_.anchor[k] + leaf_.size()) bits |= 1 << (2 * k + 1);
     }
     return bits;
   }

@@ -173,9 +173,9 @@ bool Mover::move(Index v) {
   const bool hanging = grid_.vertices.hanging[v] != 0;
   const double first = other == 0 && own != 0 && !hanging ? 1.0 : -1.0;
   // Next to a sharp edge or corner of the boundary, when the moves across the nearest face
-  // fail: out across all its faces at once, clear of each. The diagonal steps below may only
-  // just cross the edge and leave it in a corner of the leaves' faces, too close for a
-  // feature point, and the edge is cut off.
+  // fail: out across two of its faces at once, then all, clear of each (across_planes). The
+  // diagonal steps below may only just cross the edge and leave it in a corner of the leaves'
+  // faces, too close for a feature point, and the edge is cut off.
   std::vector<Vec3> candidates{at + first * step * n, at - first * step * n};
   if (first > 0.0)
     for (const Vec3& p : across_planes(x, near_boundary, step)) candidates.push_back(p);

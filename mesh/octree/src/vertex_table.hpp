@@ -16,4 +16,9 @@ OctreeVertices refined_vertex_geometry(const Octree& tree, const OctreeVertices&
 // it as that leaf's mid-edge or face-centre vertex.
 void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVertices& v);
 
+// Throws InputError when nv vertices exceed the index limit.
+void check_vertex_count(std::size_t nv);
+// leaf_edge_mid and leaf_face_centre of n leaves, all kNoIndex.
+void clear_leaf_midpoints(OctreeVertices& v, std::size_t n);
+
 }  // namespace volmesh

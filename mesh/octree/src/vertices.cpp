@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <numeric>
 #include <string>
 
 #include "vertex_table.hpp"
@@ -12,8 +11,7 @@
 
 namespace volmesh {
 
-// Marks vertex `id` at p hanging when it lies inside an edge or a face of a leaf, and records
-// it as that leaf's mid-edge or face-centre vertex. On a balanced tree such a leaf is one level coarser than
+// On a balanced tree a leaf that p lies inside an edge or a face of is one level coarser than
 // the finest grid p lies on, and p is the midpoint of its edge (one coordinate off that
 // coarser grid) or the centre of its face (two), so a few lookups around p settle it.
 void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVertices& v) {
@@ -63,6 +61,21 @@ void classify_vertex(const Octree& tree, Index id, const GridPoint& p, OctreeVer
     }
   }
   v.hanging[id] = hanging;
+}
+
+void check_vertex_count(std::size_t nv) {
+  if (nv > static_cast<std::size_t>(kMaxIndex))
+    throw InputError("octree: " + std::to_string(nv) + " vertices exceed the index limit " +
+                     std::to_string(kMaxIndex) + "; lower the level");
+}
+
+void clear_leaf_midpoints(OctreeVertices& v, std::size_t n) {
+  std::array<Index, 12> no_mid;
+  no_mid.fill(kNoIndex);
+  v.leaf_edge_mid.assign(n, no_mid);
+  std::array<Index, 6> no_centre;
+  no_centre.fill(kNoIndex);
+  v.leaf_face_centre.assign(n, no_centre);
 }
 
 OctreeVertices octree_vertex_geometry(const Octree& tree) {
@@ -135,10 +148,7 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
         v.leaf_corners[unit_leaf[u] + c][k] = vertex_of[e0 + p];
       }
   });
-  if (codes.size() > static_cast<std::size_t>(kMaxIndex))
-    throw InputError("octree: " + std::to_string(codes.size()) +
-                     " vertices exceed the index limit " + std::to_string(kMaxIndex) +
-                     "; lower the level");
+  check_vertex_count(codes.size());
 
   const std::size_t nv = codes.size();
   v.coords.resize(nv);
@@ -148,17 +158,12 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
     v.points[i] = tree.world(v.coords[i]);
   });
 
-  std::array<Index, 12> none;
-  none.fill(kNoIndex);
-  v.leaf_edge_mid.assign(n, none);
-  std::array<Index, 6> no_centre;
-  no_centre.fill(kNoIndex);
-  v.leaf_face_centre.assign(n, no_centre);
+  clear_leaf_midpoints(v, n);
   v.hanging.assign(nv, 0);
   // Each (leaf, edge) has one midpoint and each (leaf, face) one centre, so no two vertices
-  // write the same entry. A vertex
-  // that is a corner of every leaf around it (of 2^k, k its coordinates inside the root)
-  // lies inside no leaf's edge or face: only the others are looked at.
+  // write the same entry. A vertex that is a corner of every leaf around it (of 2^k, k its
+  // coordinates inside the root) lies inside no leaf's edge or face: only the others are
+  // looked at.
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
     int around = 1;
     for (const std::uint32_t x : v.coords[i]) around <<= (x != 0 && x != kOctreeGrid);
@@ -169,16 +174,14 @@ OctreeVertices octree_vertex_geometry(const Octree& tree) {
 }
 
 OctreeVertices octree_vertices(const Octree& tree, const Domain& domain, const OctreeVertices& known) {
-  std::vector<Index> fresh;  // vertices whose regions are to be queried
-  OctreeVertices v;
   if (known.num_vertices() == 0) {
-    v = octree_vertex_geometry(tree);
+    OctreeVertices v = octree_vertex_geometry(tree);
     v.region.resize(v.points.size());
-    fresh.resize(v.points.size());
-    std::iota(fresh.begin(), fresh.end(), Index{0});
-  } else {
-    v = refined_vertex_geometry(tree, known, fresh);
+    domain.region(v.points, v.region);
+    return v;
   }
+  std::vector<Index> fresh;  // the new vertices, whose regions are queried
+  OctreeVertices v = refined_vertex_geometry(tree, known, fresh);
   std::vector<Vec3> points(fresh.size());
   for (std::size_t k = 0; k < fresh.size(); ++k) points[k] = v.points[fresh[k]];
   std::vector<Index> regions(fresh.size());

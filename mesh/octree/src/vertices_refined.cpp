@@ -7,10 +7,8 @@
 #include <oneapi/tbb/parallel_sort.h>
 
 #include <algorithm>
-#include <string>
 
 #include "vertex_table.hpp"
-#include "volmesh/core/errors.hpp"
 
 namespace volmesh {
 namespace {
@@ -53,43 +51,36 @@ OctreeVertices refined_vertex_geometry(const Octree& tree, const OctreeVertices&
   for (const std::uint64_t c : corner_codes)
     if (!std::binary_search(known.codes.begin(), known.codes.end(), c)) born.push_back(c);
   const std::size_t nv = known.codes.size() + born.size();
-  if (nv > static_cast<std::size_t>(kMaxIndex))
-    throw InputError("octree: " + std::to_string(nv) + " vertices exceed the index limit " +
-                     std::to_string(kMaxIndex) + "; lower the level");
+  check_vertex_count(nv);
 
+  // The known and the new codes merged; known vertex k moves to moved[k].
   OctreeVertices v;
   v.codes.resize(nv);
-  std::merge(known.codes.begin(), known.codes.end(), born.begin(), born.end(), v.codes.begin());
-  // Known vertex k moves up by the number of new codes below its own.
-  std::vector<Index> moved(known.codes.size());
   v.coords.resize(nv);
   v.points.resize(nv);
   v.region.assign(nv, kNoIndex);
   v.hanging.assign(nv, 0);
+  std::vector<Index> moved(known.codes.size());
   fresh.clear();
-  for (std::size_t k = 0, b = 0; k < known.codes.size(); ++k) {
-    while (b < born.size() && born[b] < known.codes[k]) ++b;
-    const std::size_t to = k + b;
-    moved[k] = static_cast<Index>(to);
-    v.coords[to] = known.coords[k];
-    v.points[to] = known.points[k];
-    v.region[to] = known.region[k];
-    v.hanging[to] = known.hanging[k];
-  }
-  for (const std::uint64_t c : born) {
-    const Index id = index_of(v.codes, c);
-    v.coords[id] = morton_decode(c);
-    v.points[id] = tree.world(v.coords[id]);
-    fresh.push_back(id);
+  for (std::size_t to = 0, k = 0, b = 0; to < nv; ++to) {
+    if (b < born.size() && (k == known.codes.size() || born[b] < known.codes[k])) {
+      v.codes[to] = born[b++];
+      v.coords[to] = morton_decode(v.codes[to]);
+      v.points[to] = tree.world(v.coords[to]);
+      fresh.push_back(static_cast<Index>(to));
+    } else {
+      moved[k] = static_cast<Index>(to);
+      v.codes[to] = known.codes[k];
+      v.coords[to] = known.coords[k];
+      v.points[to] = known.points[k];
+      v.region[to] = known.region[k];
+      v.hanging[to] = known.hanging[k];
+      ++k;
+    }
   }
 
-  std::array<Index, 12> no_mid;
-  no_mid.fill(kNoIndex);
-  std::array<Index, 6> no_centre;
-  no_centre.fill(kNoIndex);
   v.leaf_corners.resize(n);
-  v.leaf_edge_mid.assign(n, no_mid);
-  v.leaf_face_centre.assign(n, no_centre);
+  clear_leaf_midpoints(v, n);
   const auto renumber = [&moved](Index x) { return x == kNoIndex ? kNoIndex : moved[x]; };
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
     if (const Index i = same[j]; i != kNoIndex) {
