@@ -178,6 +178,20 @@ std::vector<Index> LayeredDomain::regions() const { return model_->regions; }
 
 std::string LayeredDomain::surface_name(const Vec3& p) const {
   if (!p.allFinite()) return {};
+  const Box3& box = model_->box;
+  const double tolerance = 1e-9 * (box.hi - box.lo).norm();
+  Index nearest_face = kNoIndex;
+  double nearest = tolerance;
+  if (((p - box.lo).array() < -tolerance).any() || ((p - box.hi).array() > tolerance).any()) nearest = -1.0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {0, 1}) {
+      const double d = std::abs(p[axis] - (side == 0 ? box.lo : box.hi)[axis]);
+      if (d <= nearest) {
+        nearest = d;
+        nearest_face = 2 * axis + side;  // the sheet order xmin, xmax, ..., zmax
+      }
+    }
+  if (nearest_face != kNoIndex) return model_->sheets[nearest_face].name;
   return model_->sheets[layers::nearest_sheet(*model_, p).sheet].name;
 }
 
