@@ -7,6 +7,9 @@
 #include <span>
 #include <utility>
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/cutcell/cell_split.hpp"
 #include "volmesh/io/polygon_split.hpp"
@@ -186,16 +189,20 @@ void Agglomerator::merge_groups(std::span<const Group> groups) {
 // The best of the candidate merges when it is better than the cells were (a tiny cell: not
 // beyond the limits, or no worse). A second neighbour only where one does not do.
 bool Agglomerator::merge_best(const std::vector<std::vector<Group>>& candidates, bool tiny) {
+  // A cell has about a hundred candidate groups: they are scored on both cores.
+  std::vector<double> worst(candidates.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 8), [&](const auto& range) {
+    for (std::size_t k = range.begin(); k != range.end(); ++k) worst[k] = merged_worst(candidates[k]);
+  });
   const std::vector<Group>* best = nullptr;
   double best_rank = std::numeric_limits<double>::infinity(), best_worst = best_rank;
-  for (const std::vector<Group>& groups : candidates) {
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
     std::size_t cells = 0;
-    for (const Group& g : groups) cells += cells_of(g).size();
-    const double w = merged_worst(groups);
-    if (const double rank = w * (1.0 + 0.01 * static_cast<double>(cells - 2)); rank < best_rank) {
+    for (const Group& g : candidates[k]) cells += cells_of(g).size();
+    if (const double rank = worst[k] * (1.0 + 0.01 * static_cast<double>(cells - 2)); rank < best_rank) {
       best_rank = rank;
-      best_worst = w;
-      best = &groups;
+      best_worst = worst[k];
+      best = &candidates[k];
     }
   }
   if (!best) return false;
