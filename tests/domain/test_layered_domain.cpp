@@ -202,10 +202,13 @@ TEST(LayeredDomain, NormalsPointOutOfTheHigherLabel) {
   EXPECT_LT((d.normal({0.01, 0.5, 0.4}) - Vec3(-1, 0, 0)).norm(), 1e-15);
   EXPECT_EQ(d.surface_name({1.0, 0.5, 0.31}), "p0");
   EXPECT_EQ(d.surface_name({1.0, 0.001, 0.4}), "ymin");
-  // On a box face (to rounding) the box face names the point, also where a horizon meets it.
-  EXPECT_EQ(d.surface_name({2.0, 0.5, 0.3}), "xmax");
-  EXPECT_EQ(d.surface_name({1e-12, 0.5, 0.7}), "xmin");
-  EXPECT_EQ(d.surface_name({1.0, 0.5, 1.0 - 1e-12}), "zmax");
+  // Boundary faces are named by the nearest box face, also where a horizon is nearer or
+  // meets the face, and beside the box.
+  EXPECT_EQ(d.boundary_name({1.0, 0.5, 0.31}), "zmin");
+  EXPECT_EQ(d.boundary_name({2.0, 0.5, 0.3}), "xmax");
+  EXPECT_EQ(d.boundary_name({1e-12, 0.5, 0.7}), "xmin");
+  EXPECT_EQ(d.boundary_name({1.0, -0.01, 0.5}), "ymin");
+  EXPECT_EQ(d.boundary_name({2.01, 0.5, 0.9}), "xmax");
 }
 
 // Horizon B rests on A (z = 0.375) for x <= 1 and rises to 0.625 at x = 2: the middle

@@ -209,7 +209,7 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   std::vector<std::vector<std::string>> names(blocks);
   tbb::parallel_for(Index{0}, blocks, [&](Index b) {
     for (const FaceOut& o : faces[b])
-      if (o.surface) names[b].push_back(grid_.domain->surface_name(o.centre));
+      if (o.surface) names[b].push_back(grid_.domain->boundary_name(o.centre));
   });
   mesh.cell_region = std::move(cell_region);
   std::vector<Index> loop;

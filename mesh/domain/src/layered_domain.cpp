@@ -3,6 +3,7 @@
 #include "volmesh/domain/layered_domain.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "layered_model.hpp"
 #include "volmesh/core/errors.hpp"
@@ -176,22 +177,25 @@ Box3 LayeredDomain::bounds() const { return model_->box; }
 
 std::vector<Index> LayeredDomain::regions() const { return model_->regions; }
 
-std::string LayeredDomain::surface_name(const Vec3& p) const {
+std::string LayeredDomain::boundary_name(const Vec3& p) const {
   if (!p.allFinite()) return {};
   const Box3& box = model_->box;
-  const double tolerance = 1e-9 * (box.hi - box.lo).norm();
-  Index nearest_face = kNoIndex;
-  double nearest = tolerance;
-  if (((p - box.lo).array() < -tolerance).any() || ((p - box.hi).array() > tolerance).any()) nearest = -1.0;
-  for (int axis = 0; axis < 3; ++axis)
-    for (const int side : {0, 1}) {
-      const double d = std::abs(p[axis] - (side == 0 ? box.lo : box.hi)[axis]);
-      if (d <= nearest) {
-        nearest = d;
-        nearest_face = 2 * axis + side;  // the sheet order xmin, xmax, ..., zmax
-      }
+  const Vec3 inside = p.cwiseMax(box.lo).cwiseMin(box.hi);
+  int nearest = 0;
+  double nearest_distance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 6; ++k) {
+    Vec3 q = inside;
+    q[k / 2] = (k % 2 ? box.hi : box.lo)[k / 2];
+    if (const double d = (p - q).norm(); d < nearest_distance) {
+      nearest_distance = d;
+      nearest = k;
     }
-  if (nearest_face != kNoIndex) return model_->sheets[nearest_face].name;
+  }
+  return model_->sheets[nearest].name;  // the box faces are sheets 0..5, in kFaceNames' order
+}
+
+std::string LayeredDomain::surface_name(const Vec3& p) const {
+  if (!p.allFinite()) return {};
   return model_->sheets[layers::nearest_sheet(*model_, p).sheet].name;
 }
 

@@ -30,6 +30,7 @@ class PrioritizedDomain final : public Domain {
     return out;
   }
   std::string surface_name(const Vec3& p) const override { return inner_->surface_name(p); }
+  std::string boundary_name(const Vec3& p) const override { return inner_->boundary_name(p); }
 
   void region(std::span<const Vec3> points, std::span<Index> out) const override {
     inner_->region(points, out);

@@ -130,7 +130,7 @@ PolyMesh staircase_cells(const Octree& tree, const Domain& domain) {
     const int f = specs[k].face;
     GridPoint centre = leaf.centre();
     centre[f / 2] = leaf.anchor[f / 2] + (f & 1) * leaf.size();
-    names[k] = domain.surface_name(tree.world(centre));
+    names[k] = domain.boundary_name(tree.world(centre));
     if (names[k].empty()) names[k] = "boundary";
   });
   for (std::size_t k = 0; k < specs.size(); ++k)

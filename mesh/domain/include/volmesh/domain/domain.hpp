@@ -44,6 +44,9 @@ class Domain {
   // Name of the interface nearest to p, for tagging boundary faces (e.g. "inner", "outer");
   // empty when the domain does not name its surfaces.
   virtual std::string surface_name(const Vec3& p) const { return {}; }
+  // Name of the boundary surface (between region 0 and the others) nearest to p, for tagging
+  // the boundary faces of a mesh; surface_name(p) unless the domain knows its boundary better.
+  virtual std::string boundary_name(const Vec3& p) const { return surface_name(p); }
 
   // Batch versions: both cores, same results as the single queries in the same order.
   // Subclasses override them where a batch can be answered faster than point by point.

@@ -101,10 +101,11 @@ class LayeredDomain final : public Domain {
   // The labels seen along a 32 x 32 grid of vertical lines through the box: a layer
   // thinner than box/32 everywhere could be missed.
   std::vector<Index> regions() const override;
-  // The nearest sheet's name; box faces are "xmin", "xmax", ..., "zmax". A point on a box
-  // face (within 1e-9 of the box's diagonal), such as a boundary face's centre, is named by
-  // that face without the nearest-point trees, which cost as much as the rest of the model.
+  // The nearest sheet's name; box faces are "xmin", "xmax", ..., "zmax".
   std::string surface_name(const Vec3& p) const override;
+  // The nearest box face's name: region 0 lies only outside the box. Unlike surface_name(),
+  // it needs no nearest-point tree (which costs as much as the rest of the model).
+  std::string boundary_name(const Vec3& p) const override;
 
  private:
   std::unique_ptr<layers::Model> model_;

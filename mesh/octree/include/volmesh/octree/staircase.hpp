@@ -28,7 +28,7 @@ struct StaircaseStats {
 // same-size pair, per small side of a big/small pair (a big leaf next to four small ones has
 // four faces there), and per leaf side facing a dropped leaf or the root boundary. Every
 // face lists every mesh vertex on its edges, so each cell closes edge by edge. Boundary
-// faces are tagged domain.surface_name(face centre), or "boundary" when unnamed; faces
+// faces are tagged domain.boundary_name(face centre), or "boundary" when unnamed; faces
 // between two regions stay internal. Throws InputError (octree limits, or no cell centre
 // inside the domain: the domain is thinner than a cell at this level).
 PolyMesh staircase_mesh(const Domain& domain, const StaircaseOptions& options,
