@@ -6,6 +6,9 @@
 #include <cmath>
 #include <optional>
 #include <span>
+#include <utility>
+
+#include <oneapi/tbb/parallel_for.h>
 
 #include "cut_grid.hpp"
 
@@ -107,7 +110,7 @@ class Mover {
   double clearance_at(const Vec3& p, Index region, const Around& around,
                       const std::vector<double>& far_before,
                       const std::vector<std::size_t>& crossings_before) const;
-  bool move(Index v);
+  bool move(Index v, const Around& around);
 
   Grid& grid_;
   double clearance_;
@@ -139,8 +142,7 @@ double Mover::clearance_at(const Vec3& p, Index region, const Around& around,
   return clear;
 }
 
-bool Mover::move(Index v) {
-  const Around around = around_vertex(grid_, v);
+bool Mover::move(Index v, const Around& around) {
   const std::vector<Index>& ends = around.ends;
   const Vec3 x = grid_.position[v];
   Nearest nearest;
@@ -215,6 +217,11 @@ bool Mover::move(Index v) {
   return resolved;
 }
 
+// The pending vertices are moved in index order, each seeing the moves of those before it.
+// Two of them interact only through the vertices around them (their edges' far ends and the
+// far corners of their split edges), so they are moved in waves on both cores: a vertex
+// waits for the wave after the last of its interacting vertices with a lower index. The
+// result is the sequential one, for any number of threads.
 std::array<Index, 2> Mover::run() {
   state_.assign(grid_.position.size(), none);
   for (std::size_t e = 0; e < grid_.edges.size(); ++e) {
@@ -225,13 +232,48 @@ std::array<Index, 2> Mover::run() {
     if (t < clearance_) state_[a] = pending;
     if (t > 1.0 - clearance_) state_[b] = pending;
   }
+  std::vector<Index> pending_vertices;
+  for (Index v = 0; v < static_cast<Index>(state_.size()); ++v)
+    if (state_[v] == pending) pending_vertices.push_back(v);
+  const std::size_t n = pending_vertices.size();
+  std::vector<Around> around(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) { around[k] = around_vertex(grid_, pending_vertices[k]); });
+
+  // Interactions between pending vertices, both ways, as pairs of positions in the list.
+  std::vector<Index> slot(state_.size(), kNoIndex);
+  for (std::size_t k = 0; k < n; ++k) slot[pending_vertices[k]] = static_cast<Index>(k);
+  std::vector<std::pair<Index, Index>> pairs;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto link = [&](Index w) {
+      if (slot[w] != kNoIndex && slot[w] != static_cast<Index>(k))
+        pairs.emplace_back(std::max<Index>(k, slot[w]), std::min<Index>(k, slot[w]));
+    };
+    for (Index w : around[k].ends) link(w);
+    for (const auto& [m, far] : around[k].split_edges) link(far);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<Index> wave(n, 0);
+  for (const auto& [later, earlier] : pairs) wave[later] = std::max(wave[later], wave[earlier] + 1);
+  std::vector<std::vector<Index>> waves;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (static_cast<std::size_t>(wave[k]) >= waves.size()) waves.resize(wave[k] + 1);
+    waves[wave[k]].push_back(static_cast<Index>(k));
+  }
+
+  std::vector<char> resolved(n, 1), changed(n, 0);
+  for (const std::vector<Index>& members : waves) {
+    tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
+      const Index k = members[i], v = pending_vertices[k];
+      const Vec3 before = grid_.position[v];
+      resolved[k] = move(v, around[k]);
+      changed[k] = grid_.position[v] != before;
+    });
+    for (Index k : members) state_[pending_vertices[k]] = done;
+  }
   Index moved = 0, unresolved = 0;
-  for (Index v = 0; v < static_cast<Index>(state_.size()); ++v) {
-    if (state_[v] != pending) continue;
-    const Vec3 before = grid_.position[v];
-    if (!move(v)) ++unresolved;
-    if (grid_.position[v] != before) ++moved;
-    state_[v] = done;
+  for (std::size_t k = 0; k < n; ++k) {
+    moved += changed[k];
+    unresolved += !resolved[k];
   }
   return {moved, unresolved};
 }
