@@ -66,17 +66,15 @@ void Octree::leaves_changed() {
   morton_.resize(leaves_.size());
   tbb::parallel_for(std::size_t{0}, leaves_.size(),
                     [&](std::size_t i) { morton_[i] = morton_encode(leaves_[i].anchor); });
-  by_code_ = std::make_shared<CodeIndex>();
-}
-
-const KeyMap& Octree::by_code() const {
-  std::call_once(by_code_->built, [this] {
-    KeyMap& map = by_code_->map;
-    map.reserve(leaves_.size());
-    for (std::size_t i = 0; i < leaves_.size(); ++i)
-      map.insert(octree_code(leaves_[i].anchor, leaves_[i].level), static_cast<Index>(i));
-  });
-  return by_code_->map;
+  int bits = 0;
+  while (bits < 3 * kOctreeMaxLevel && (std::size_t{1} << bits) < leaves_.size()) ++bits;
+  bucket_shift_ = 3 * kOctreeMaxLevel - bits;
+  const std::size_t buckets = std::size_t{1} << bits;
+  bucket_first_.assign(buckets + 1, static_cast<Index>(leaves_.size()));
+  std::size_t next = 0;  // the first bucket not yet given its first leaf
+  for (std::size_t i = 0; i < leaves_.size(); ++i)
+    for (const std::size_t b = morton_[i] >> bucket_shift_; next <= b; ++next)
+      bucket_first_[next] = static_cast<Index>(i);
 }
 
 double Octree::cell_size(int level) const { return std::ldexp(root_size_, -level); }
@@ -96,13 +94,18 @@ Index Octree::find_leaf(const GridPoint& anchor, int level) const {
   if (level < 0 || level > kOctreeMaxLevel || !aligned(anchor, level) ||
       anchor[0] >= kOctreeGrid || anchor[1] >= kOctreeGrid || anchor[2] >= kOctreeGrid)
     return kNoIndex;
-  return by_code().find(octree_code(anchor, level));
+  const Index i = leaf_containing(anchor);
+  return leaves_[i].level == level && leaves_[i].anchor == anchor ? i : kNoIndex;
 }
 
 Index Octree::leaf_containing(const GridPoint& p) const {
   if (p[0] >= kOctreeGrid || p[1] >= kOctreeGrid || p[2] >= kOctreeGrid) return kNoIndex;
-  const auto it = std::upper_bound(morton_.begin(), morton_.end(), morton_encode(p));
-  return static_cast<Index>(it - morton_.begin()) - 1;
+  // Every leaf before the bucket's first starts below p's code, every one from the next
+  // bucket's first above it.
+  const std::uint64_t code = morton_encode(p);
+  const std::size_t b = code >> bucket_shift_;
+  const auto first = morton_.begin() + bucket_first_[b], last = morton_.begin() + bucket_first_[b + 1];
+  return static_cast<Index>(std::upper_bound(first, last, code) - morton_.begin()) - 1;
 }
 
 namespace {

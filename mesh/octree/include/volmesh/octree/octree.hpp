@@ -15,16 +15,15 @@
 //
 // Leaves are kept in Morton order of their anchors; a leaf's index is its position in that
 // order. Any change to the tree (split, refine, balance) renumbers the leaves.
-// Lookups use a hash map keyed by the leaf's locational code (O(1) expected, built in O(n)
-// on the first lookup after a change); containment of an arbitrary point uses binary search
-// on the Morton order (O(log n)).
+// Lookups (a leaf by anchor and level, the leaf containing a point) search the Morton order
+// within a bucket of a table over the codes' leading bits, about one leaf per bucket (O(1)
+// expected, the table rebuilt in O(n) after a change). A hash map by locational code cost
+// more to rebuild after each refinement pass than all the lookups it served.
 // Const member functions are thread-safe.
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <memory>
-#include <mutex>
 #include <span>
 #include <vector>
 
@@ -133,20 +132,14 @@ class Octree {
   void split(std::span<const Index> leaves);
 
  private:
-  // The code -> leaf hash, built on the first lookup after a change (refinement passes
-  // only split and need none); shared by copies until one of them changes.
-  struct CodeIndex {
-    std::once_flag built;
-    KeyMap map;
-  };
-  const KeyMap& by_code() const;
   void leaves_changed();
 
   Vec3 origin_;
   double root_size_;
   std::vector<OctreeLeaf> leaves_;     // Morton order of anchors
   std::vector<std::uint64_t> morton_;  // morton_encode(anchor) per leaf, ascending
-  std::shared_ptr<CodeIndex> by_code_;
+  int bucket_shift_ = 63;              // a code's bucket: code >> bucket_shift_
+  std::vector<Index> bucket_first_;    // first leaf with code >= the bucket's; one past the end
 };
 
 // Locational code of a node: a 1 bit above the Morton code of anchor / size (unique over
