@@ -21,15 +21,11 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Splits the listed leaves through the octree's refinement hook (balanced after).
-void split_leaves(Octree& tree, const std::vector<Index>& leaves) {
-  KeyMap chosen(leaves.size());
-  for (Index i : leaves) chosen.insert(octree_code(tree.leaf(i).anchor, tree.leaf(i).level), 1);
-  refine(
-      tree,
-      [&chosen](const Octree& t, Index i) {
-        return chosen.find(octree_code(t.leaf(i).anchor, t.leaf(i).level)) != kNoIndex;
-      },
-      kOctreeMaxLevel);
+void split_leaves(Octree& tree, std::vector<Index> leaves) {
+  std::erase_if(leaves, [&tree](Index i) { return tree.leaf(i).level >= kOctreeMaxLevel; });
+  std::sort(leaves.begin(), leaves.end());
+  leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+  if (!leaves.empty()) split_balanced(tree, std::move(leaves));
 }
 
 void check_options(const CutcellOptions& o) {

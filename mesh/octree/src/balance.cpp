@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <vector>
 
-#include "rebalance.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {

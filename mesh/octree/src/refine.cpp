@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 
-#include "rebalance.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/octree/octree.hpp"
 

@@ -151,6 +151,12 @@ std::uint64_t octree_code(const GridPoint& anchor, int level);
 // level (each leaf is visited once). The result is the coarsest balanced refinement.
 void balance(Octree& tree);
 
+// Splits the listed leaves of a balanced tree (each below kOctreeMaxLevel) and restores the
+// balance around them only: each split leaf's 18 face and edge neighbours of its size must
+// exist, which may split coarser leaves, whose neighbours are checked in turn. Cheaper than
+// balance() when the splits are a fraction of the tree.
+void split_balanced(Octree& tree, std::vector<Index> leaves);
+
 // A leaf is selected by `select(tree, leaf)`; refine() splits every selected leaf below
 // max_level, rebalances, and evaluates `select` again on the whole new tree, until no leaf
 // below max_level is selected. `select` runs concurrently on both cores and must be
