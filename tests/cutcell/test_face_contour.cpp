@@ -169,6 +169,22 @@ TEST(FaceContour, SharpEdgeAlongASideKeepsItsFeaturePoint) {
   }
 }
 
+// A concave sharp edge crossing the face 0.014 of the side from the left side, whose lower
+// part stays in the kept region (fandisk at level 6): its feature point is kept, a thin spike
+// of the kept polygon beside it; the chord from side to side cut the edge off.
+TEST(FaceContour, SharpEdgeBesideAKeptSideKeepsItsFeaturePoint) {
+  const Vec3 left(0.0, 0.24, 0.0), feature(0.0136, 0.1695, 0.0), right(1.0, 0.1716, 0.0);
+  const Vec3 a = feature - left, b = right - feature;
+  Square sq{{1, 1, 0, 0}, {}};
+  sq.side[3] = {{left, Vec3(-a.y(), a.x(), 0.0).normalized()}};
+  sq.side[1] = {{right, Vec3(-b.y(), b.x(), 0.0).normalized()}};
+  const FaceInput f = make_face(sq);
+  const FaceContour c = contour_face(f);
+  ASSERT_EQ(c.kind, FacePointKind::feature_point);
+  EXPECT_LT((c.point - feature).norm(), 1e-9);
+  expect_partition(f, c);
+}
+
 // Two regions on alternate corners: the tangent lines decide which corners connect.
 Square ambiguous_square(bool blobs_at_corners) {
   Square sq{{1, 2, 1, 2}, {}};

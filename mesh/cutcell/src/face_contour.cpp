@@ -21,6 +21,11 @@ constexpr double kRightAngle = 0.5;
 // A feature point within 10 times this fraction of the side outside its face, or less than
 // it inside, is moved to this depth.
 constexpr double kSideSlack = 1e-3;
+// A sharp edge's feature point keeps this fraction of the side from the kept polygon's sides
+// (the margin is for the points of curved surfaces): an edge crossing the face just beside a
+// side whose end is kept (fandisk's, 0.014 of the side from it) keeps its point, which the
+// cell's feature fan needs, and leaves a thin but proper spike of the kept polygon.
+constexpr double kSideClearance = 1e-2;
 
 struct Frame {
   Vec3 centre, normal;
@@ -156,8 +161,8 @@ double Contourer::chord_agreement(int p, int q) const {
 // plane, its vertices moved across it), or along a side (an edge of a CAD part, fandisk's,
 // that the vertex moves put on the side), and there the outside polygon's sliver is dropped
 // with it. A sharp edge here: one surface is a plane parallel to the octree's faces, or the
-// two meet at nearly a right angle. On a curved surface a tangent intersection that near a
-// side is no feature (a torus's).
+// two meet at nearly a right angle. It need only keep kSideClearance from the kept polygon's
+// sides. On a curved surface a tangent intersection that near a side is no feature (a torus's).
 bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   const double margin = options_.margin * frame_.size;
   const double depth = depth_inside(frame_, point);
@@ -172,7 +177,7 @@ bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
     const Vec3& a = at(i).position;
     // In the face plane, relative to a.
     const Vec3 p = in_plane(point - a, frame_.normal), b = in_plane(at(i + 1).position - a, frame_.normal);
-    if (distance_to_segment(p, Vec3::Zero(), b) < margin) return false;
+    if (distance_to_segment(p, Vec3::Zero(), b) < kSideClearance * frame_.size) return false;
   }
   return true;
 }
