@@ -237,7 +237,8 @@ std::array<Index, 2> Mover::run() {
     if (state_[v] == pending) pending_vertices.push_back(v);
   const std::size_t n = pending_vertices.size();
   std::vector<Around> around(n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) { around[k] = around_vertex(grid_, pending_vertices[k]); });
+  tbb::parallel_for(std::size_t{0}, n,
+                    [&](std::size_t k) { around[k] = around_vertex(grid_, pending_vertices[k]); });
 
   // Interactions between pending vertices, both ways, as pairs of positions in the list.
   std::vector<Index> slot(state_.size(), kNoIndex);
