@@ -159,7 +159,7 @@ TEST(Staircase, SameMeshForOneAndTwoThreads) {
   EXPECT_EQ(one.tag_names, two.tag_names);
 }
 
-TEST(Staircase, BoundaryFacesAreTaggedBySurfaceName) {
+TEST(Staircase, BoundaryFacesAreTaggedByBoundaryName) {
   const auto domain = make_builtin_domain("thick-sphere");
   const PolyMesh mesh = staircase(*domain, 4);
   expect_valid(mesh);

@@ -20,7 +20,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Splits the listed leaves through the octree's refinement hook (balanced after).
+// Splits the listed leaves (those not at the deepest level, each once) and rebalances around them.
 void split_leaves(Octree& tree, std::vector<Index> leaves) {
   std::erase_if(leaves, [&tree](Index i) { return tree.leaf(i).level >= kOctreeMaxLevel; });
   std::sort(leaves.begin(), leaves.end());

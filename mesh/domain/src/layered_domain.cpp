@@ -191,7 +191,7 @@ std::string LayeredDomain::boundary_name(const Vec3& p) const {
       nearest = k;
     }
   }
-  return model_->sheets[nearest].name;  // the box faces are sheets 0..5, in kFaceNames' order
+  return layers::kFaceNames[nearest];
 }
 
 std::string LayeredDomain::surface_name(const Vec3& p) const {

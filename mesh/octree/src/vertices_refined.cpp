@@ -40,11 +40,12 @@ OctreeVertices refined_vertex_geometry(const Octree& tree, const OctreeVertices&
     else
       added.push_back(j);
   }
-  // The new leaves' corners that are new vertices.
-  std::vector<std::uint64_t> corner_codes(8 * added.size());
+  // The new leaves' corners, and those of them that are new vertices.
+  std::vector<std::uint64_t> added_corners(8 * added.size());
   tbb::parallel_for(std::size_t{0}, added.size(), [&](std::size_t k) {
-    for (int c = 0; c < 8; ++c) corner_codes[8 * k + c] = morton_encode(tree.leaf(added[k]).corner(c));
+    for (int c = 0; c < 8; ++c) added_corners[8 * k + c] = morton_encode(tree.leaf(added[k]).corner(c));
   });
+  std::vector<std::uint64_t> corner_codes = added_corners;
   tbb::parallel_sort(corner_codes.begin(), corner_codes.end());
   corner_codes.erase(std::unique(corner_codes.begin(), corner_codes.end()), corner_codes.end());
   std::vector<std::uint64_t> born;
@@ -83,13 +84,14 @@ OctreeVertices refined_vertex_geometry(const Octree& tree, const OctreeVertices&
   clear_leaf_midpoints(v, n);
   const auto renumber = [&moved](Index x) { return x == kNoIndex ? kNoIndex : moved[x]; };
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
-    if (const Index i = same[j]; i != kNoIndex) {
-      for (int c = 0; c < 8; ++c) v.leaf_corners[j][c] = moved[known.leaf_corners[i][c]];
-      for (int e = 0; e < 12; ++e) v.leaf_edge_mid[j][e] = renumber(known.leaf_edge_mid[i][e]);
-      for (int f = 0; f < 6; ++f) v.leaf_face_centre[j][f] = renumber(known.leaf_face_centre[i][f]);
-    } else {
-      for (int c = 0; c < 8; ++c) v.leaf_corners[j][c] = index_of(v.codes, morton_encode(tree.leaf(j).corner(c)));
-    }
+    const Index i = same[j];
+    if (i == kNoIndex) return;
+    for (int c = 0; c < 8; ++c) v.leaf_corners[j][c] = moved[known.leaf_corners[i][c]];
+    for (int e = 0; e < 12; ++e) v.leaf_edge_mid[j][e] = renumber(known.leaf_edge_mid[i][e]);
+    for (int f = 0; f < 6; ++f) v.leaf_face_centre[j][f] = renumber(known.leaf_face_centre[i][f]);
+  });
+  tbb::parallel_for(std::size_t{0}, added.size(), [&](std::size_t k) {
+    for (int c = 0; c < 8; ++c) v.leaf_corners[added[k]][c] = index_of(v.codes, added_corners[8 * k + c]);
   });
   // Hanging or not, and whose mid-edge or face-centre vertex, changes only for the corners of
   // the new leaves: any leaf finer than a new leaf is new too (2:1 balance).
