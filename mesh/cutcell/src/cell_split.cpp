@@ -81,6 +81,14 @@ class Splitter {
     faces_.push_back(0);
     return static_cast<int>(position_.size()) - 1;
   }
+  // A fan's centre at p: the loop's own point there when one lies there (a feature point
+  // on a grid edge, where a corner of the domain meets it), else a new point. A new point
+  // on a loop point would leave two triangles of no area.
+  int fan_centre(std::span<const int> loop, const Vec3& p) {
+    for (const int k : loop)
+      if ((position_[k] - p).norm() <= 1e-9 * size_) return k;
+    return add_point(p);
+  }
   std::optional<Vec3> clamp(const Vec3& p, double reach) const {
     return clamp_into_cell(in_.corners, p, options_.margin * size_, reach * size_);
   }
@@ -404,7 +412,7 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
         else if (const auto p = clamp_component(loop.points, s, n, on_boundary, feature->point,
                                                 options_.feature_reach, feature->corner ? 3 : 2))
-          out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, add_point(*p))});
+          out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, fan_centre(loop.points, *p))});
         if (!out.empty()) return out;
       }
   }
@@ -458,7 +466,7 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   const auto [s, n] = fitted_points(loop);
   if (!s.empty())
     if (const auto p = clamp_component(loop, s, n, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
-      surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, add_point(*p))};
+      surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, fan_centre(loop, *p))};
   const bool large = static_cast<int>(loop.size()) >= options_.fan_points;
   // After add_point: the spans must see the vectors as they are now.
   const LoopPoints points{position_, faces_};
@@ -467,8 +475,8 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   if (surface && !large) out.push_back(*surface);
   if (auto t = triangulate_across_faces(points, loop)) out.push_back({LoopMethod::across_faces, std::move(*t)});
   if (const auto p = clamp_component(loop, s, n, on_boundary, mass, options_.reach, 1))
-    out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(*p))});
-  if (out.empty()) out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, add_point(mass))});
+    out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, fan_centre(loop, *p))});
+  if (out.empty()) out.push_back({LoopMethod::centroid_fan, triangulate_fan(loop, fan_centre(loop, mass))});
 }
 
 void Splitter::build_pieces() {
