@@ -65,7 +65,7 @@ class Agglomerator {
   static std::span<const Index> cells_of(const Group& g) {
     return {g.data(), static_cast<std::size_t>(g[1] == kNoIndex ? 1 : g[2] == kNoIndex ? 2 : 3)};
   }
-  double merged_worst(std::span<const Group> groups) const;
+  double merged_worst(std::span<const Group> groups, double cutoff) const;
   std::vector<Index> region_neighbours(Index c) const;
   std::vector<Group> groups_around(Index x) const;
   void merge_groups(std::span<const Group> groups);
@@ -115,8 +115,9 @@ CellGeometry Agglomerator::union_geometry(std::span<const Index> cells) const {
 }
 
 // The worst score of the faces around the groups of cells (disjoint), each group merged into
-// one cell with the centre union_geometry gives it.
-double Agglomerator::merged_worst(std::span<const Group> groups) const {
+// one cell with the centre union_geometry gives it; once it reaches `cutoff`, any score from
+// there up.
+double Agglomerator::merged_worst(std::span<const Group> groups, double cutoff) const {
   std::vector<std::pair<Index, Vec3>> centre;
   for (const Group& g : groups) {
     const Vec3 c = union_geometry(cells_of(g)).centre;
@@ -142,6 +143,7 @@ double Agglomerator::merged_worst(std::span<const Group> groups) const {
         const Index owner = mesh_.owner[f];
         worst = std::max(worst, o == kNoIndex ? score(f, centre_of(c), nullptr)
                                               : score(f, centre_of(owner), &centre_of(mesh_.neighbour[f])));
+        if (worst >= cutoff) return worst;
       }
   return worst;
 }
@@ -189,17 +191,25 @@ void Agglomerator::merge_groups(std::span<const Group> groups) {
 // The best of the candidate merges when it is better than the cells were (a tiny cell: not
 // beyond the limits, or no worse). A second neighbour only where one does not do.
 bool Agglomerator::merge_best(const std::vector<std::vector<Group>>& candidates, bool tiny) {
-  // A cell has about a hundred candidate groups: they are scored on both cores.
+  // A cell has about a hundred candidate groups: they are scored on both cores. The first
+  // one's rank bounds the winner's: the others stop scoring once they cannot beat it.
+  if (candidates.empty()) return false;
+  const auto weight = [](const std::vector<Group>& groups) {
+    std::size_t cells = 0;
+    for (const Group& g : groups) cells += cells_of(g).size();
+    return 1.0 + 0.01 * static_cast<double>(cells - 2);
+  };
   std::vector<double> worst(candidates.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 8), [&](const auto& range) {
-    for (std::size_t k = range.begin(); k != range.end(); ++k) worst[k] = merged_worst(candidates[k]);
+  worst[0] = merged_worst(candidates[0], std::numeric_limits<double>::infinity());
+  const double bound = worst[0] * weight(candidates[0]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(1, candidates.size(), 8), [&](const auto& range) {
+    for (std::size_t k = range.begin(); k != range.end(); ++k)
+      worst[k] = merged_worst(candidates[k], bound / weight(candidates[k]));
   });
   const std::vector<Group>* best = nullptr;
   double best_rank = std::numeric_limits<double>::infinity(), best_worst = best_rank;
   for (std::size_t k = 0; k < candidates.size(); ++k) {
-    std::size_t cells = 0;
-    for (const Group& g : candidates[k]) cells += cells_of(g).size();
-    if (const double rank = worst[k] * (1.0 + 0.01 * static_cast<double>(cells - 2)); rank < best_rank) {
+    if (const double rank = worst[k] * weight(candidates[k]); rank < best_rank) {
       best_rank = rank;
       best_worst = worst[k];
       best = &candidates[k];
