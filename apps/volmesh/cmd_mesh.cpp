@@ -120,6 +120,7 @@ MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
                {"min_cell_volume_ratio", stats.min_cell_volume_ratio},
                {"max_skewness", stats.max_skewness},
                {"max_non_orthogonality", stats.max_non_orthogonality},
+               {"split_cells", stats.split_cells},
                {"merged_cells", stats.merged_cells},
                {"joined_faces", stats.joined_faces},
                {"bad_faces", stats.bad_faces},

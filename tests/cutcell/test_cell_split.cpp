@@ -168,6 +168,23 @@ TEST(CellSplit, JunctionPointInsideTheCellIsTheCellInterfacePoint) {
   EXPECT_NEAR(v.at(4), 0.6 * 0.55 * 0.45, 1e-12);
 }
 
+// Region 2's edge (x = 0.4, z = 0.55) ends on region 3's plane y = 0.45 inside the cell, as
+// builtin:primitives' box edge ends on the cylinder's cap: two face interface points (x+
+// and z+), whose link in the plane would cut the edge's end off. The junction is the
+// corner, and every component fans around it.
+TEST(CellSplit, InteriorEdgeEndingOnAPlaneKeepsItsCorner) {
+  const AnalyticDomain d = layers({{{Vec3::Constant(-2), Vec3::Constant(3)}, 1},
+                                   {{Vec3(0.4, -2, 0.55), Vec3(3, 0.45, 3)}, 2},
+                                   {{Vec3(-2, 0.45, -2), Vec3::Constant(3)}, 3}});
+  const test::UnitCube cube = test::unit_cube(d);
+  const CellSplit split = cutcell::split_cell(cube.input);
+  ASSERT_FALSE(split.new_points.empty());
+  EXPECT_LT((split.new_points[0] - Vec3(0.4, 0.45, 0.55)).norm(), 1e-12);
+  const auto v = region_volumes(cube, split);
+  EXPECT_NEAR(v.at(2), 0.6 * 0.45 * 0.45, 1e-12);
+  EXPECT_NEAR(v.at(3), 0.55, 1e-12);
+}
+
 TEST(CellSplit, PublishedM3CUsesTheCellCentre) {
   const AnalyticDomain d = layers({{{Vec3::Constant(-2), Vec3::Constant(3)}, 1},
                                    {{Vec3(0.4, -2, -2), Vec3(3, 0.45, 3)}, 2},

@@ -108,7 +108,8 @@ class Splitter {
   std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
                  const EdgeNormals& edges);
-  bool boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_boundary) const;
+  bool normals_are_sharp(std::span<const Vec3> normals) const;
+  bool junction_may_bend(const EdgeNormals& edges) const;
   bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
@@ -131,7 +132,8 @@ class Splitter {
   }
   std::vector<Vec3> piece_centres(const std::vector<std::vector<Triangle>>& triangles) const;
   double badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour, bool outside) const;
-  void merge_skewed(std::vector<std::vector<Triangle>>& triangles);
+  // methods: how each component was triangulated.
+  void merge_skewed(std::vector<std::vector<Triangle>>& triangles, const std::vector<LoopMethod>& methods);
   void flip_slivers(std::vector<std::vector<Triangle>>& triangles);
   void emit_triangles(const std::vector<std::vector<Triangle>>& triangles);
 
@@ -265,20 +267,32 @@ int Splitter::cell_point(const std::vector<int>& face_points, const std::optiona
   return add_point(p);
 }
 
-// Whether the normals at the cell's edge points on the domain's boundary show a sharp edge.
-bool Splitter::boundary_edge_is_sharp(const std::vector<std::uint8_t>& on_boundary) const {
-  std::vector<Vec3> normals;
-  for (std::size_t i = 0; i < in_.points.size(); ++i)
-    if (on_boundary[i]) normals.push_back(in_.points[i].normal);
+// Whether the normals at these edge points show a sharp edge.
+bool Splitter::normals_are_sharp(std::span<const Vec3> normals) const {
   for (std::size_t i = 0; i < normals.size(); ++i)
     for (std::size_t j = i + 1; j < normals.size(); ++j)
       if (normals[i].dot(normals[j]) < options_.feature.theta) return true;
   return false;
 }
 
-// Two face interface points are joined by their link unless the junction bends inside the
-// cell: where it meets a sharp edge of the domain's boundary (a layer ending on the box's
-// edge), the link would cut the edge off; the junction point there is the cell point.
+// Where two face interface points are all the cell has, the link between them is the
+// junction unless it bends inside the cell: at a sharp edge of the domain's boundary (a
+// layer ending on the box's edge), or of an interface where regions meet inside (a box's
+// edge in a ball, meeting a cylinder's end). Inside, only where the least-squares junction
+// point lies clear of the cell's faces: pushed in from near them it bends the interfaces
+// more than the link does.
+bool Splitter::junction_may_bend(const EdgeNormals& edges) const {
+  std::vector<Vec3> boundary;
+  for (std::size_t i = 0; i < edges.points.size(); ++i)
+    if (edges.level[i] == 0) boundary.push_back(edges.normals[i]);
+  if (normals_are_sharp(boundary)) return true;
+  if (!normals_are_sharp(edges.normals) || edges.points.empty()) return false;
+  const Vec3 junction = tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3);
+  return depth_inside_cell(in_.corners, junction) >= options_.junction_margin * size_;
+}
+
+// Whether the junction point lies farther than bend * size from the link between the two
+// face interface points: the link would cut the edge off.
 bool Splitter::junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const {
   return distance_to_segment(fitted, position_[face_points[0]], position_[face_points[1]]) > options_.bend * size_;
 }
@@ -302,9 +316,8 @@ void Splitter::build_loops() {
   if (nif > 2 && !options_.exact_points) {
     centre = cell_point(face_points, std::nullopt, {});
   } else if (nif >= 2 && options_.exact_points) {
-    const std::vector<std::uint8_t> on_boundary = boundary_edge_points();
-    if (nif > 2 || boundary_edge_is_sharp(on_boundary)) {
-      const EdgeNormals edges = edge_normals(on_boundary);
+    const EdgeNormals edges = edge_normals(boundary_edge_points());
+    if (nif > 2 || junction_may_bend(edges)) {
       const std::optional<Vec3> fitted = fitted_cell_point(edges);
       if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
         centre = cell_point(face_points, fitted, edges);
@@ -582,12 +595,15 @@ double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec
 // component (sharing one edge, nearly coplanar unless it is a sliver) into a polygon, as
 // long as that lowers its badness. The interface does not move; the trace is no longer a
 // triangulation there.
-void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
+void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles,
+                            const std::vector<LoopMethod>& methods) {
   const std::vector<Vec3> centre = piece_centres(triangles);
   const double cos_limit = std::cos(options_.merge_angle * std::acos(-1.0) / 180.0);
   for (std::size_t l = 0; l < loops_.size(); ++l) {
     const auto [lower, higher] = loop_pieces(loops_[l]);
     const bool outside = out_.pieces[lower].region == 0;
+    const bool sharp = methods[l] == LoopMethod::feature_split || methods[l] == LoopMethod::feature_fan ||
+                       methods[l] == LoopMethod::interface_fan;
     const auto skew = [&](const std::vector<int>& f) { return badness(f, centre[higher], centre[lower], outside); };
     std::vector<std::vector<int>> faces;
     for (const Triangle& t : triangles[l]) faces.push_back({t[0], t[1], t[2]});
@@ -604,8 +620,11 @@ void Splitter::merge_skewed(std::vector<std::vector<Triangle>>& triangles) {
           // A polygon folded over itself would fold the pieces on it.
           if (merged.empty() || split_polygon(position_, std::vector<Index>(merged.begin(), merged.end())).folded) continue;
           const Vec3 ag = polygon_geometry(position_, std::vector<Index>(faces[g].begin(), faces[g].end())).area_vector;
-          // A sliver's normal means little: it may join a face four times its size at any angle.
-          if (nf.dot(ag.normalized()) < cos_limit && af.norm() > 0.25 * ag.norm()) continue;
+          // A sliver's normal means little: it may join a face four times its size at any
+          // angle, but not across a sharp edge the component keeps (a feature split or fan,
+          // or a fan around a junction), which the polygon would cut off or fill in;
+          // reflex_split splits such a piece.
+          if (nf.dot(ag.normalized()) < cos_limit && (sharp || af.norm() > 0.25 * ag.norm())) continue;
           if (const double w = skew(merged); w < best) {
             best = w;
             best_g = g;
@@ -715,7 +734,9 @@ CellSplit Splitter::run() {
         }
       }
     if (worst > 1.0 && options_.merge_angle > 0.0) {
-      merge_skewed(triangles);
+      std::vector<LoopMethod> methods;
+      for (std::size_t l = 0; l < loops_.size(); ++l) methods.push_back(options[l][choice[l]].method);
+      merge_skewed(triangles, methods);
       const std::vector<Vec3> centre = piece_centres(triangles);
       worst = worst_badness(triangles);
       for (const PiecePolygon& p : out_.polygons)

@@ -10,6 +10,7 @@
 #include "agglomerate.hpp"
 #include "assemble.hpp"
 #include "cut_grid.hpp"
+#include "reflex_split.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/quality/face_metrics.hpp"
@@ -158,6 +159,7 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
     merging.skewness_limit = options.skewness_limit;
     merging.min_volume_ratio = options.merge_volume_ratio;
     merging.rounds = options.merge_rounds;
+    st.split_cells = split_reflex_cells(mesh, cell_size, {merging.skewness_limit, merging.max_non_orthogonality});
     const AgglomerationStats merged = agglomerate(mesh, cell_size, merging);
     st.merged_cells = merged.merged;
     st.joined_faces = merged.joined;

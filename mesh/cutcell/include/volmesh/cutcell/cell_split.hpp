@@ -81,7 +81,8 @@ struct CellOptions {
   double max_non_orthogonality = 88.0;
   // The last resort for a triangle still more skewed: merged with neighbouring triangles of
   // its interface whose normals differ by less than this angle (degrees) into one polygon
-  // face. 0 keeps the trace a triangulation everywhere.
+  // face (a sliver at any angle, except across a sharp edge its component keeps). 0 keeps
+  // the trace a triangulation everywhere.
   double merge_angle = 60.0;
 };
 

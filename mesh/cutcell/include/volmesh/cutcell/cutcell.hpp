@@ -73,6 +73,7 @@ struct CutcellStats {
   double max_skewness = 0.0;           // of all faces of the mesh (OpenFOAM's measure)
   double max_non_orthogonality = 0.0;  // degrees, internal faces (checkMesh's measure)
   Index merged_faces = 0;  // polygons made of interface triangles too skewed on their own
+  Index split_cells = 0;   // cells split in two at a reflex edge of the surface, before merging
   Index merged_cells = 0;  // merges of a cell into neighbours (CutcellOptions::merge_rounds)
   Index joined_faces = 0;  // faces joined with a neighbouring face between the same cells
   Index bad_faces = 0;     // faces still beyond checkMesh's limits after the merging
