@@ -201,6 +201,23 @@ TEST(CellSplit, PublishedM3CUsesTheCellCentre) {
   region_volumes(cube, split);  // closed pieces filling the cube
 }
 
+// A junction point just outside the unit cube's face y = 1 slides along its line into the
+// cube, to the margin, and not across the other faces: the least move either way.
+TEST(SlideIntoCell, MovesAlongTheLineToTheMargin) {
+  std::array<Vec3, 8> corners;
+  for (int k = 0; k < 8; ++k) corners[k] = test::cube_corner(k);
+  const Vec3 line = Vec3(0.0, 1.0, -1.0).normalized();
+  const std::optional<Vec3> p = cutcell::slide_into_cell(corners, Vec3(0.5, 1.05, 0.5), line, 0.1, 0.5);
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p->y(), 0.9, 1e-12);
+  EXPECT_NEAR(p->z(), 0.65, 1e-12);
+  EXPECT_NEAR(p->x(), 0.5, 1e-12);
+  // Along x the face y = 1 stays where it is: no move gets in.
+  EXPECT_FALSE(cutcell::slide_into_cell(corners, Vec3(0.5, 1.05, 0.5), Vec3::UnitX(), 0.1, 0.5));
+  // Farther than reach.
+  EXPECT_FALSE(cutcell::slide_into_cell(corners, Vec3(0.5, 1.05, 0.5), line, 0.1, 0.1));
+}
+
 TEST(MergeAlongEdge, JoinsTwoFacesAcrossTheirOneSharedEdge) {
   // (0 1 2) and (2 1 3) share 1 -> 2 / 2 -> 1: the quad keeps the orientation of both.
   EXPECT_EQ(cutcell::merge_along_edge({0, 1, 2}, {2, 1, 3}), (std::vector<int>{2, 0, 1, 3}));

@@ -2,6 +2,8 @@
 // Kobbelt/EMC sharp-feature test.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <Eigen/QR>
 #include <cmath>
 #include <cstdint>
@@ -81,6 +83,18 @@ TEST(TangentPoint, FewDirectionsTellsPlanesFromCurvedSurfaces) {
   EXPECT_TRUE(few_directions(sphere, 2));
   EXPECT_FALSE(few_directions(sphere, 2, 2));
   EXPECT_TRUE(few_directions(box, 2, 2));
+}
+
+// A sphere meeting the plane x = 0 along the circle y^2 + z^2 = 1: the normals leave the
+// circle's tangent free. Three planes, or one plane alone (two free directions), do not.
+TEST(TangentPoint, FreeDirectionIsTheJunctionLine) {
+  std::vector<Vec3> normals{Vec3::UnitX(), Vec3::UnitX()};
+  for (const double a : {0.60, 0.61, 0.62}) normals.push_back(Vec3(0.0, std::cos(a), std::sin(a)));
+  const std::optional<Vec3> line = free_direction(normals);
+  ASSERT_TRUE(line);
+  EXPECT_NEAR(std::abs(line->dot(Vec3(0.0, -std::sin(0.61), std::cos(0.61)))), 1.0, 1e-3);
+  EXPECT_FALSE(free_direction(std::vector<Vec3>{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}));
+  EXPECT_FALSE(free_direction(std::vector<Vec3>{Vec3::UnitX(), Vec3::UnitX()}));
 }
 
 TEST(SharpFeature, SmoothNormalsHaveNone) {

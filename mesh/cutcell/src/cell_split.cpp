@@ -239,10 +239,17 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
 // fitted first), inside the cell; nullopt when it lies beyond reach.
 std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges) const {
   if (edges.points.empty()) return std::nullopt;
-  const double margin = options_.junction_margin * size_;
-  const std::optional<Vec3> p =
-      clamp_into_cell(in_.corners, tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3),
-                      margin, options_.reach * size_);
+  const double margin = options_.junction_margin * size_, reach = options_.reach * size_;
+  const Vec3 fitted = tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3);
+  std::optional<Vec3> p;
+  // On a junction line (a sphere meeting a plane) the point slides along the line into the
+  // cell, keeping down to a quarter of the margin where the line passes by a cell edge;
+  // pushed in across the faces it would leave the line by up to the margin.
+  if (depth_inside_cell(in_.corners, fitted) < margin)
+    if (const std::optional<Vec3> line = free_direction(edges.normals))
+      for (double m = margin; !p && m >= 0.25 * margin; m *= 0.5)
+        p = slide_into_cell(in_.corners, fitted, *line, m, reach);
+  if (!p) p = clamp_into_cell(in_.corners, fitted, margin, reach);
   if (!p) return p;
   const auto [s, n] = boundary_planes(edges);
   return onto_planes(s, n, *p, margin, 3);
@@ -787,6 +794,21 @@ std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, 
     for (const auto& [centre, normal] : planes)
       if (const double d = normal.dot(centre - p); d < margin) p -= (margin - d) * normal;
   return p;
+}
+
+std::optional<Vec3> slide_into_cell(const std::array<Vec3, 8>& corners, const Vec3& p, const Vec3& direction,
+                                    double margin, double reach) {
+  // Each face plane bounds the move s: normal . (centre - p - s direction) >= margin.
+  double lo = -reach, hi = reach;
+  for (const auto& [centre, normal] : face_planes(corners)) {
+    const double room = normal.dot(centre - p) - margin, rate = normal.dot(direction);
+    if (rate > 0.0) hi = std::min(hi, room / rate);
+    else if (rate < 0.0) lo = std::max(lo, room / rate);
+    else if (room < 0.0) return std::nullopt;
+  }
+  if (lo > hi) return std::nullopt;
+  const double s = lo > 0.0 ? lo : (hi < 0.0 ? hi : 0.0);
+  return p + s * direction;
 }
 
 CellSplit split_cell(const CellInput& cell, const CellOptions& options) {

@@ -73,6 +73,17 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
   return fit(points, normals, level, mass_point(points), max_rank, relative_cutoff);
 }
 
+std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff) {
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  for (const Vec3& n : normals) ata += n * n.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(ata);
+  const double largest = eigen.eigenvalues()[2];
+  if (!(largest > 0.0) || eigen.eigenvalues()[0] > relative_cutoff * relative_cutoff * largest ||
+      eigen.eigenvalues()[1] <= relative_cutoff * relative_cutoff * largest)
+    return std::nullopt;
+  return Vec3(eigen.eigenvectors().col(0));
+}
+
 bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points) {
   std::vector<Vec3> seen;
   std::vector<int> count;

@@ -145,5 +145,9 @@ double depth_inside_cell(const std::array<Vec3, 8>& corners, const Vec3& p);
 // than `reach` outside.
 std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, double margin,
                                     double reach);
+// p moved along `direction` (either way, the least distance) until it lies `margin` from
+// every face plane; nullopt when no such move reaches it within `reach`.
+std::optional<Vec3> slide_into_cell(const std::array<Vec3, 8>& corners, const Vec3& p, const Vec3& direction,
+                                    double margin, double reach);
 
 }  // namespace volmesh::cutcell

@@ -31,6 +31,11 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
                                  std::span<const std::uint8_t> level, int max_rank = 3,
                                  double relative_cutoff = 0.1);
 
+// The direction the normals leave free, when the least-squares fit drops it (its squared
+// singular value at most relative_cutoff^2 of the largest): along a junction line, where the
+// tangent planes of two or more surfaces meet.
+std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff = 0.1);
+
 // Whether the normals take at most max_planes directions (to rounding), each at min_points
 // points or more: the points lie on that many planes, as on a box's faces, rather than on a
 // curved surface (a direction seen once may be one normal of a curved surface).
