@@ -293,7 +293,7 @@ bool Splitter::junction_may_bend(const EdgeNormals& edges) const {
   for (std::size_t i = 0; i < edges.points.size(); ++i)
     if (edges.level[i] == 0) boundary.push_back(edges.normals[i]);
   if (normals_are_sharp(boundary)) return true;
-  if (!normals_are_sharp(edges.normals) || edges.points.empty()) return false;
+  if (!normals_are_sharp(edges.normals)) return false;
   const Vec3 junction = tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3);
   return depth_inside_cell(in_.corners, junction) >= options_.junction_margin * size_;
 }
