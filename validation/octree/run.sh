@@ -31,27 +31,14 @@ SNAPPY_LEVEL=3          # refinementSurfaces level, as in the issue's measuremen
 SNAPPY_BACKGROUND=18    # background cells along the longest side: ~126,000 cells on fandisk, knot1
 VOLMESH_LEVEL=7         # the cut-cell level nearest snappyHexMesh's cell count
 
-need=()
-command -v snappyHexMesh > /dev/null || need+=(openfoam)
-for p in python3-numpy python3-matplotlib libcgal-demo; do
-  dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need+=("$p")
-done
-if [ ${#need[@]} -gt 0 ]; then
-  SUDO=$([ "$(id -u)" = 0 ] || echo sudo)
-  echo "installing: ${need[*]}"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}"
-fi
-
+# shellcheck source=setup.sh
+. "$HERE/setup.sh"
+# snappyHexMesh may come from an OpenFOAM installed otherwise than from Debian.
+openfoam=()
+command -v snappyHexMesh > /dev/null || openfoam=(openfoam)
+install_missing "${openfoam[@]}" python3-numpy python3-matplotlib libcgal-demo
 mkdir -p "$OUT"
-cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release > "$BUILD/configure.log"
-cmake --build "$BUILD" -j "$(nproc)" --target volmesh > "$BUILD/build.log" 2>&1
-VOLMESH=$BUILD/apps/volmesh/volmesh
-MESHES=$BUILD/cgal-data/data/meshes
-if [ ! -f "$MESHES/knot1.off" ]; then
-  mkdir -p "$BUILD/cgal-data"
-  tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$BUILD/cgal-data" data/meshes
-fi
+build_volmesh
 
 # volmesh mesh cutcell, timed: NAME.json and NAME.time in $OUT.
 cutcell() {  # name domain LbB|L output

@@ -13,20 +13,11 @@ BUILD=${VALIDATION_BUILD:-$ROOT/build/validation-octree}
 OUT=$BUILD/surfaces
 LEVELS="4 5 6"
 
-if ! dpkg-query -W -f='${Status}\n' libcgal-demo 2>/dev/null | grep -q '^install ok installed'; then
-  SUDO=$([ "$(id -u)" = 0 ] || echo sudo)
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo
-fi
+# shellcheck source=setup.sh
+. "$ROOT/validation/octree/setup.sh"
+install_missing libcgal-demo
 mkdir -p "$OUT"
-cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release > "$BUILD/configure.log"
-cmake --build "$BUILD" -j "$(nproc)" --target volmesh > "$BUILD/build.log" 2>&1
-VOLMESH=$BUILD/apps/volmesh/volmesh
-MESHES=$BUILD/cgal-data/data/meshes
-if [ ! -f "$MESHES/knot1.off" ]; then
-  mkdir -p "$BUILD/cgal-data"
-  tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$BUILD/cgal-data" data/meshes
-fi
+build_volmesh
 
 for surface in "$MESHES"/*.off; do
   name=$(basename "$surface" .off)

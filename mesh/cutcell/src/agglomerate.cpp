@@ -86,32 +86,15 @@ class Agglomerator {
   std::vector<Index> changed_;  // cells whose centre or faces changed since the last round
 };
 
-// Volume and centre of the union of the cells as checkMesh computes them
-// (primitiveMeshCellCentresAndVols): pyramids from the mean of the face centres to each
-// face, each with its centroid at 3/4 of the way to the face centre. On a warped face this
-// differs from the exact centroid, and checkMesh's verdict follows this one.
+// Volume and centre of the union of the cells as checkMesh computes them.
 CellGeometry Agglomerator::union_geometry(std::span<const Index> cells) const {
   const auto inside = [&cells](Index c) { return std::find(cells.begin(), cells.end(), c) != cells.end(); };
-  Vec3 estimate = Vec3::Zero();
-  int count = 0;
-  for (const Index c : cells)
-    for (Index f : faces_of_[c])
-      if (const Index o = other_side(f, c); o == kNoIndex || !inside(o)) {
-        estimate += face_[f].centre;
-        ++count;
-      }
-  estimate /= static_cast<double>(std::max(count, 1));
-  double volume = 0.0;
-  Vec3 moment = Vec3::Zero();
-  for (const Index c : cells)
-    for (Index f : faces_of_[c])
-      if (const Index o = other_side(f, c); o == kNoIndex || !inside(o)) {
-        const double sign = mesh_.owner[f] == c ? 1.0 : -1.0;
-        const double v = sign * face_[f].area_vector.dot(face_[f].centre - estimate) / 3.0;
-        volume += v;
-        moment += v * (0.75 * face_[f].centre + 0.25 * estimate);
-      }
-  return {volume, volume != 0.0 ? Vec3(moment / volume) : estimate};
+  return checkmesh_cell_geometry([&](const auto& visit) {
+    for (const Index c : cells)
+      for (Index f : faces_of_[c])
+        if (const Index o = other_side(f, c); o == kNoIndex || !inside(o))
+          visit(mesh_.owner[f] == c ? face_[f].area_vector : Vec3(-face_[f].area_vector), face_[f].centre);
+  });
 }
 
 // The worst score of the faces around the groups of cells (disjoint), each group merged into

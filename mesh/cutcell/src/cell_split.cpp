@@ -105,11 +105,11 @@ class Splitter {
   std::optional<Vec3> clamp_component(const std::vector<int>& loop, std::span<const Vec3> s,
                                       std::span<const Vec3> n, bool on_boundary, const Vec3& p,
                                       double reach, int max_rank) const;
-  std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges) const;
+  std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges, const Vec3& junction) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
                  const EdgeNormals& edges);
   bool normals_are_sharp(std::span<const Vec3> normals) const;
-  bool junction_may_bend(const EdgeNormals& edges) const;
+  bool junction_may_bend(const EdgeNormals& edges, const Vec3& junction) const;
   bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
@@ -236,20 +236,18 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
 }
 
 // The least-squares junction point of the cell's edge points (those on the domain's boundary
-// fitted first), inside the cell; nullopt when it lies beyond reach.
-std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges) const {
-  if (edges.points.empty()) return std::nullopt;
+// fitted first: `junction`), moved inside the cell; nullopt when it lies beyond reach.
+std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges, const Vec3& junction) const {
   const double margin = options_.junction_margin * size_, reach = options_.reach * size_;
-  const Vec3 fitted = tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3);
   std::optional<Vec3> p;
   // On a junction line (a sphere meeting a plane) the point slides along the line into the
   // cell, keeping down to a quarter of the margin where the line passes by a cell edge;
   // pushed in across the faces it would leave the line by up to the margin.
-  if (depth_inside_cell(in_.corners, fitted) < margin)
+  if (depth_inside_cell(in_.corners, junction) < margin)
     if (const std::optional<Vec3> line = free_direction(edges.normals))
       for (double m = margin; !p && m >= 0.25 * margin; m *= 0.5)
-        p = slide_into_cell(in_.corners, fitted, *line, m, reach);
-  if (!p) p = clamp_into_cell(in_.corners, fitted, margin, reach);
+        p = slide_into_cell(in_.corners, junction, *line, m, reach);
+  if (!p) p = clamp_into_cell(in_.corners, junction, margin, reach);
   if (!p) return p;
   const auto [s, n] = boundary_planes(edges);
   return onto_planes(s, n, *p, margin, 3);
@@ -288,13 +286,12 @@ bool Splitter::normals_are_sharp(std::span<const Vec3> normals) const {
 // edge in a ball, meeting a cylinder's end). Inside, only where the least-squares junction
 // point lies clear of the cell's faces: pushed in from near them it bends the interfaces
 // more than the link does.
-bool Splitter::junction_may_bend(const EdgeNormals& edges) const {
+bool Splitter::junction_may_bend(const EdgeNormals& edges, const Vec3& junction) const {
   std::vector<Vec3> boundary;
   for (std::size_t i = 0; i < edges.points.size(); ++i)
     if (edges.level[i] == 0) boundary.push_back(edges.normals[i]);
   if (normals_are_sharp(boundary)) return true;
   if (!normals_are_sharp(edges.normals)) return false;
-  const Vec3 junction = tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3);
   return depth_inside_cell(in_.corners, junction) >= options_.junction_margin * size_;
 }
 
@@ -324,8 +321,12 @@ void Splitter::build_loops() {
     centre = cell_point(face_points, std::nullopt, {});
   } else if (nif >= 2 && options_.exact_points) {
     const EdgeNormals edges = edge_normals(boundary_edge_points());
-    if (nif > 2 || junction_may_bend(edges)) {
-      const std::optional<Vec3> fitted = fitted_cell_point(edges);
+    // The least-squares junction of the edge points, those on the domain's boundary first.
+    const std::optional<Vec3> junction =
+        edges.points.empty() ? std::nullopt
+                             : std::optional(tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3));
+    if (nif > 2 || (junction && junction_may_bend(edges, *junction))) {
+      const std::optional<Vec3> fitted = junction ? fitted_cell_point(edges, *junction) : std::nullopt;
       if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
         centre = cell_point(face_points, fitted, edges);
     }

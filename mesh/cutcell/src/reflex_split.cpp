@@ -27,8 +27,12 @@ struct Plane {
 // A cell split in two, before it is committed: the faces of the part A behind the plane
 // and the part B in front of it, oriented out of their part.
 struct Split {
-  std::vector<std::pair<Index, Vec3>> cut_points;  // new points: (index, position)
-  std::vector<std::pair<Index, Index>> cut_edges;  // the edge each new point lies on
+  // The points the plane puts on the cell's edges, numbered num_points + k in the loops.
+  struct Cut {
+    Vec3 position;
+    Index a, b;  // the edge
+  };
+  std::vector<Cut> cuts;
   struct Face {
     Index face;  // the original face, or kNoIndex for the new one between A and B
     int part;
@@ -109,7 +113,7 @@ class ReflexSplitter {
   const std::vector<Vec3>& points_() const { return mesh_.points; }
   std::vector<Plane> reflex_planes(Index c) const;
   std::optional<Split> split(Index c, const Plane& plane);
-  double split_worst(Index c, Split& s);
+  double split_worst(Index c, const Split& s);
   void insert_on_edge(Index c, Index a, Index b, Index m);
   void commit(Index c, const Split& s);
   PolyMesh rebuild() const;
@@ -212,9 +216,8 @@ std::optional<Split> ReflexSplitter::split(Index c, const Plane& plane) {
     if (const auto it = cut_of.find(key); it != cut_of.end()) return it->second;
     const Vec3 &pa = points_()[key.first], &pb = points_()[key.second];
     const double da = plane.normal.dot(pa - plane.point), db = plane.normal.dot(pb - plane.point);
-    const Index id = base + static_cast<Index>(s.cut_points.size());
-    s.cut_points.push_back({id, pa + da / (da - db) * (pb - pa)});
-    s.cut_edges.push_back(key);
+    const Index id = base + static_cast<Index>(s.cuts.size());
+    s.cuts.push_back({pa + da / (da - db) * (pb - pa), key.first, key.second});
     cut_of.emplace(key, id);
     return id;
   };
@@ -313,9 +316,9 @@ std::optional<Split> ReflexSplitter::split(Index c, const Plane& plane) {
 }
 
 // The worst badness of the two parts' faces, infinity when a part is flat or inverted.
-double ReflexSplitter::split_worst(Index c, Split& s) {
+double ReflexSplitter::split_worst(Index c, const Split& s) {
   const std::size_t old_points = mesh_.points.size();
-  for (const auto& [id, p] : s.cut_points) mesh_.points.push_back(p);
+  for (const Split::Cut& cut : s.cuts) mesh_.points.push_back(cut.position);
   std::array<std::vector<std::vector<Index>>, 2> parts;
   for (const Split::Face& f : s.faces) {
     parts[f.part].push_back(f.loop);
@@ -375,9 +378,9 @@ void ReflexSplitter::insert_on_edge(Index c, Index a, Index b, Index m) {
 }
 
 void ReflexSplitter::commit(Index c, const Split& s) {
-  for (std::size_t k = 0; k < s.cut_points.size(); ++k) {
-    mesh_.points.push_back(s.cut_points[k].second);
-    insert_on_edge(c, s.cut_edges[k].first, s.cut_edges[k].second, s.cut_points[k].first);
+  for (const Split::Cut& cut : s.cuts) {
+    insert_on_edge(c, cut.a, cut.b, mesh_.num_points());
+    mesh_.points.push_back(cut.position);
   }
   const Index part_b = static_cast<Index>(region_.size());
   region_.push_back(region_[c]);

@@ -31,6 +31,31 @@ struct CellGeometry {
 CellGeometry cell_geometry(const PolyMesh& mesh, std::span<const Index> faces, Index c,
                            const std::vector<FaceGeometry>& face_geom);
 
+// Volume and centre of a cell as OpenFOAM's checkMesh computes them
+// (primitiveMeshCellCentresAndVols): pyramids from the mean of the face centres to each
+// face, each with its centroid 3/4 of the way to the face centre. On a warped face this
+// differs from cell_geometry's exact centroid, and checkMesh's verdicts follow this one.
+// for_each_face(visit) calls visit(area_vector, centre) for each face, the area vector
+// pointing out of the cell; it is called twice.
+template <class ForEachFace>
+CellGeometry checkmesh_cell_geometry(const ForEachFace& for_each_face) {
+  Vec3 estimate = Vec3::Zero();
+  int count = 0;
+  for_each_face([&](const Vec3&, const Vec3& centre) {
+    estimate += centre;
+    ++count;
+  });
+  estimate /= static_cast<double>(std::max(count, 1));
+  double volume = 0.0;
+  Vec3 moment = Vec3::Zero();
+  for_each_face([&](const Vec3& area, const Vec3& centre) {
+    const double v = area.dot(centre - estimate) / 3.0;
+    volume += v;
+    moment += v * (0.75 * centre + 0.25 * estimate);
+  });
+  return {volume, volume != 0.0 ? Vec3(moment / volume) : estimate};
+}
+
 struct MeshGeometry {
   std::vector<FaceGeometry> faces;
   std::vector<CellGeometry> cells;
