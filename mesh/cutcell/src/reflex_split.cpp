@@ -91,13 +91,12 @@ class ReflexSplitter {
   }
   const Vec3& centre(Index c) {
     if (!centre_known_[c]) {
-      centre_[c] = cell_centre(outward_faces(c));
+      centre_[c] = geometry(outward_faces(c)).centre;
       centre_known_[c] = 1;
     }
     return centre_[c];
   }
-  Vec3 cell_centre(const std::vector<std::vector<Index>>& faces) const;
-  double volume(const std::vector<std::vector<Index>>& faces) const;
+  CellGeometry geometry(const std::vector<std::vector<Index>>& faces) const;
   double badness(const std::vector<Index>& loop, const Vec3& inside, const Vec3* beyond) const {
     const FaceGeometry g = polygon_geometry(points_(), loop);
     return checkmesh_badness(g, points_(), loop, inside, beyond, limits_);
@@ -130,31 +129,13 @@ class ReflexSplitter {
   std::vector<char> centre_known_;
 };
 
-// As OpenFOAM: pyramids on the faces from the mean of the face centres.
-Vec3 ReflexSplitter::cell_centre(const std::vector<std::vector<Index>>& faces) const {
-  Vec3 estimate = Vec3::Zero();
+// Volume and centre as checkMesh computes them, from the faces' loops out of the cell.
+CellGeometry ReflexSplitter::geometry(const std::vector<std::vector<Index>>& faces) const {
   std::vector<FaceGeometry> g;
-  for (const auto& loop : faces) {
-    g.push_back(polygon_geometry(points_(), loop));
-    estimate += g.back().centre / static_cast<double>(faces.size());
-  }
-  double total = 0.0;
-  Vec3 moment = Vec3::Zero();
-  for (const FaceGeometry& fg : g) {
-    const double v = std::abs(fg.area_vector.dot(fg.centre - estimate)) / 3.0;
-    total += v;
-    moment += v * (0.75 * fg.centre + 0.25 * estimate);
-  }
-  return total > 0.0 ? Vec3(moment / total) : estimate;
-}
-
-double ReflexSplitter::volume(const std::vector<std::vector<Index>>& faces) const {
-  double v = 0.0;
-  for (const auto& loop : faces) {
-    const FaceGeometry g = polygon_geometry(points_(), loop);
-    v += g.area_vector.dot(g.centre) / 3.0;
-  }
-  return v;
+  for (const auto& loop : faces) g.push_back(polygon_geometry(points_(), loop));
+  return checkmesh_cell_geometry([&g](const auto& visit) {
+    for (const FaceGeometry& fg : g) visit(fg.area_vector, fg.centre);
+  });
 }
 
 // The planes of the planar surface faces of c that meet another surface face of c at a
@@ -326,8 +307,9 @@ double ReflexSplitter::split_worst(Index c, const Split& s) {
   }
   double w = std::numeric_limits<double>::infinity();
   const double floor = 1e-3 * std::pow(size_[c], 3);
-  if (volume(parts[kNegative]) > floor && volume(parts[kPositive]) > floor) {
-    const std::array<Vec3, 2> centre{cell_centre(parts[kNegative]), cell_centre(parts[kPositive])};
+  const CellGeometry a = geometry(parts[kNegative]), b = geometry(parts[kPositive]);
+  if (a.volume > floor && b.volume > floor) {
+    const std::array<Vec3, 2> centre{a.centre, b.centre};
     w = 0.0;
     for (const Split::Face& f : s.faces) {
       if (f.face == kNoIndex) {
