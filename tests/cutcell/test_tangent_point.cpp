@@ -83,6 +83,11 @@ TEST(TangentPoint, FewDirectionsTellsPlanesFromCurvedSurfaces) {
   EXPECT_TRUE(few_directions(sphere, 2));
   EXPECT_FALSE(few_directions(sphere, 2, 2));
   EXPECT_TRUE(few_directions(box, 2, 2));
+  // A box face grazing the cell: one point on it is enough.
+  const std::vector<Vec3> grazed{Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY()};
+  EXPECT_TRUE(few_directions(grazed, 2, 2));
+  const std::vector<Vec3> tilted{Vec3::UnitX(), Vec3::UnitX(), Vec3(0, 1, 1).normalized()};
+  EXPECT_FALSE(few_directions(tilted, 2, 2));
 }
 
 // A sphere meeting the plane x = 0 along the circle y^2 + z^2 = 1: the normals leave the
@@ -115,6 +120,25 @@ TEST(SharpFeature, BoxEdgeIsAnEdgeOnTheEdgeLine) {
   ASSERT_TRUE(f.has_value());
   EXPECT_FALSE(f->corner);
   EXPECT_LT((f->point - Vec3(1, 1, 0.4)).norm(), 1e-12);
+}
+
+// A layer interface ending on the wall x = 0 (layers6 at level 6): one wall point and two
+// interface points whose tangent planes, the interface being curved, meet the wall's along
+// no common line. Fitted together the edge point lies 2.5e-7 off the wall, and the wall's
+// faces around it are no longer planar; the wall's point fitted first keeps it on the wall.
+TEST(SharpFeature, JunctionWithTheBoundaryLiesOnIt) {
+  const std::vector<Vec3> s{{0.0, 0.6375, 0.628906}, {0.01875, 0.6375, 0.634229}, {0.01875, 0.620313, 0.62982}};
+  const std::vector<Vec3> n{Vec3::UnitX(), Vec3(-0.1809, -0.2714, 0.9453).normalized(),
+                            Vec3(-0.1767, -0.2125, 0.9611).normalized()};
+  const auto together = sharp_feature(s, n);
+  ASSERT_TRUE(together.has_value());
+  EXPECT_GT(std::abs(together->point.x()), 1e-8);
+  const std::vector<std::uint8_t> level{0, 1, 1};
+  const auto ranked = sharp_feature(s, n, {}, level);
+  ASSERT_TRUE(ranked.has_value());
+  EXPECT_FALSE(ranked->corner);
+  EXPECT_LT(std::abs(ranked->point.x()), 1e-15);
+  EXPECT_LT((ranked->point - together->point).norm(), 1e-3);
 }
 
 TEST(SharpFeature, BoxCornerIsACorner) {

@@ -65,6 +65,7 @@ class Splitter {
       faces_.push_back(p.faces);
     }
     size_ = cell_size(in.corners);
+    on_boundary_ = boundary_edge_points();
     Index material = 0;
     for (const CellPolygon& p : in.polygons) {
       if (p.region == 0) continue;
@@ -98,7 +99,7 @@ class Splitter {
     std::vector<Vec3> points, normals;
     std::vector<std::uint8_t> level;  // 0: on the domain's boundary
   };
-  EdgeNormals edge_normals(const std::vector<std::uint8_t>& on_boundary) const;
+  EdgeNormals edge_normals() const;
   static std::pair<std::vector<Vec3>, std::vector<Vec3>> boundary_planes(const EdgeNormals& edges);
   Vec3 onto_planes(std::span<const Vec3> s, std::span<const Vec3> n, Vec3 p, double margin,
                    int max_rank) const;
@@ -119,7 +120,7 @@ class Splitter {
     for (std::size_t l = 0; l < options.size(); ++l) options[l][0].triangles = triangles[l];
   }
   // The edge points of a loop with known normals.
-  std::pair<std::vector<Vec3>, std::vector<Vec3>> fitted_points(const std::vector<int>& loop) const;
+  EdgeNormals fitted_points(const std::vector<int>& loop) const;
   void split_along_feature(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
   void smooth_candidates(const std::vector<int>& loop, bool on_boundary, std::vector<Candidate>& out);
   int face_point_near(const Loop& loop, const Vec3& p) const;
@@ -141,6 +142,7 @@ class Splitter {
   const CellOptions& options_;
   double size_;
   bool materials_meet_ = false;  // two regions of the domain, not just one and the outside
+  std::vector<std::uint8_t> on_boundary_;  // per input point: boundary_edge_points()
   std::vector<Vec3> position_;
   std::vector<std::uint8_t> faces_;
   std::vector<CellSegment> segments_;  // normalised
@@ -160,15 +162,10 @@ std::vector<std::uint8_t> Splitter::boundary_edge_points() const {
 }
 
 // The cell's edge points with known normals, level 0 those on the domain's boundary.
-Splitter::EdgeNormals Splitter::edge_normals(const std::vector<std::uint8_t>& on_boundary) const {
-  EdgeNormals out;
-  for (std::size_t i = 0; i < in_.points.size(); ++i)
-    if (const CellPoint& q = in_.points[i]; q.kind == CellPointKind::edge && !q.normal.isZero()) {
-      out.points.push_back(q.position);
-      out.normals.push_back(q.normal);
-      out.level.push_back(on_boundary[i] ? 0 : 1);
-    }
-  return out;
+Splitter::EdgeNormals Splitter::edge_normals() const {
+  std::vector<int> all(in_.points.size());
+  std::iota(all.begin(), all.end(), 0);
+  return fitted_points(all);
 }
 
 // p moved onto the planes through points s with normals n (at most max_rank of them), while
@@ -320,7 +317,7 @@ void Splitter::build_loops() {
   if (nif > 2 && !options_.exact_points) {
     centre = cell_point(face_points, std::nullopt, {});
   } else if (nif >= 2 && options_.exact_points) {
-    const EdgeNormals edges = edge_normals(boundary_edge_points());
+    const EdgeNormals edges = edge_normals();
     // The least-squares junction of the edge points, those on the domain's boundary first.
     const std::optional<Vec3> junction =
         edges.points.empty() ? std::nullopt
@@ -380,13 +377,14 @@ void Splitter::build_loops() {
   }
 }
 
-std::pair<std::vector<Vec3>, std::vector<Vec3>> Splitter::fitted_points(const std::vector<int>& loop) const {
-  std::pair<std::vector<Vec3>, std::vector<Vec3>> out;
+Splitter::EdgeNormals Splitter::fitted_points(const std::vector<int>& loop) const {
+  EdgeNormals out;
   for (int p : loop)
     if (p < static_cast<int>(in_.points.size()) && in_.points[p].kind == CellPointKind::edge &&
         !in_.points[p].normal.isZero()) {
-      out.first.push_back(in_.points[p].position);
-      out.second.push_back(in_.points[p].normal);
+      out.points.push_back(in_.points[p].position);
+      out.normals.push_back(in_.points[p].normal);
+      out.level.push_back(on_boundary_[p] ? 0 : 1);
     }
   return out;
 }
@@ -421,9 +419,11 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
   std::vector<Candidate> out;
   const bool on_boundary = loop.lower == 0;
   if (options_.exact_points) {
-    const auto [s, n] = fitted_points(loop.points);
+    const EdgeNormals fit = fitted_points(loop.points);
+    const std::vector<Vec3>&s = fit.points, &n = fit.normals;
+    // A junction with the domain's boundary lies on the boundary: its points fitted first.
     if (s.size() >= 2)
-      if (const auto feature = sharp_feature(s, n, options_.feature)) {
+      if (const auto feature = sharp_feature(s, n, options_.feature, fit.level)) {
         if (!feature->corner) split_along_feature(loop.points, on_boundary, out);
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
@@ -484,7 +484,8 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   Vec3 mass = Vec3::Zero();
   for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
   std::optional<Candidate> surface;
-  const auto [s, n] = fitted_points(loop);
+  const EdgeNormals fit = fitted_points(loop);
+  const std::vector<Vec3>&s = fit.points, &n = fit.normals;
   if (!s.empty())
     if (const auto p = clamp_component(loop, s, n, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
       surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, fan_centre(loop, *p))};

@@ -98,11 +98,13 @@ bool few_directions(std::span<const Vec3> normals, int max_planes, int min_point
       count.push_back(1);
     }
   }
-  return std::all_of(count.begin(), count.end(), [min_points](int c) { return c >= min_points; });
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    if (count[k] < min_points && !parallel_to_octree_faces(seen[k])) return false;
+  return true;
 }
 
 std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                     const FeatureThresholds& thresholds) {
+                                     const FeatureThresholds& thresholds, std::span<const std::uint8_t> level) {
   const std::size_t n = normals.size();
   double theta = 2.0;
   std::size_t i0 = 0, i1 = 0;
@@ -121,7 +123,7 @@ std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<con
   else
     phi = 1.0;  // opposite normals: a thin sheet, treat as a corner
   const bool corner = phi > thresholds.phi;
-  return Feature{tangent_intersection(points, normals, corner ? 3 : 2), corner};
+  return Feature{fit(points, normals, level, mass_point(points), corner ? 3 : 2, 0.1), corner};
 }
 
 }  // namespace volmesh::cutcell

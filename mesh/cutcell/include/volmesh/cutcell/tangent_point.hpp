@@ -36,16 +36,17 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
 // tangent planes of two or more surfaces meet.
 std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff = 0.1);
 
-// Whether the normals take at most max_planes directions (to rounding), each at min_points
-// points or more: the points lie on that many planes, as on a box's faces, rather than on a
-// curved surface (a direction seen once may be one normal of a curved surface).
-bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points = 1);
-
 // Whether a unit normal is exactly an axis: the plane is parallel to the octree's faces (a
 // box's face), the only boundary planes points are moved back onto.
 inline bool parallel_to_octree_faces(const Vec3& normal) {
   return (normal.cwiseAbs().array() == 1.0).any();
 }
+
+// Whether the normals take at most max_planes directions (to rounding), each at min_points
+// points or more unless it is an axis: the points lie on that many planes, as on a box's
+// faces, rather than on a curved surface (a direction seen once may be one normal of a curved
+// surface; an axis seen once is a box's face that only grazes the cell).
+bool few_directions(std::span<const Vec3> normals, int max_planes, int min_points = 1);
 
 // The Kobbelt/EMC feature test on one contour component: theta = min n_i . n_j; a sharp
 // feature when theta < theta_s. With n* = n0 x n1 for the pair of least dot product,
@@ -58,7 +59,9 @@ struct Feature {
   Vec3 point;
   bool corner;
 };
+// `level` as in tangent_intersection_ranked (empty: one level).
 std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<const Vec3> normals,
-                                     const FeatureThresholds& thresholds = {});
+                                     const FeatureThresholds& thresholds = {},
+                                     std::span<const std::uint8_t> level = {});
 
 }  // namespace volmesh::cutcell
