@@ -28,9 +28,8 @@ OctreeOptions octree_options(int level, bool uniform) {
   return o;
 }
 
-// OctreeOptions: the root is the bounding box's largest side times (1 + 2 margin).
 double octree_cell_size(const Domain& domain, const OctreeOptions& o) {
-  return std::ldexp(domain.bounds().size().maxCoeff() * (1.0 + 2.0 * o.margin), -o.level);
+  return std::ldexp(octree_root(domain, o).side, -o.level);
 }
 
 // The grid of `volmesh mesh grid`: 2^level cells along each side of the bounding box. Only

@@ -34,11 +34,8 @@ PolyMesh mesh_of(const Domain& domain, Method method, int level) {
   return cutcell_mesh(domain, options);
 }
 
-// The octree's cell edge at `level` (OctreeOptions: the bounding box's largest side grown by
-// the margin on both sides, halved per level).
 double cell_size(const Domain& domain, int level) {
-  return domain.bounds().size().maxCoeff() * (1.0 + 2.0 * OctreeOptions{}.margin) /
-         std::ldexp(1.0, level);
+  return std::ldexp(octree_root(domain, OctreeOptions{}).side, -level);
 }
 
 struct Series {
@@ -129,8 +126,8 @@ TEST(GeometricConvergence, Layers6RegionVolumesAreSecondOrder) {
     total_error.push_back(std::abs(total - 1.0));
   }
   EXPECT_GE(convergence_slope(h, region_error), 1.8);
-  // The unit box's faces lie inside octree cells, yet every point on them (junctions with
-  // the layers included) lies on them: the regions fill the box to rounding at every level.
+  // The unit box is the octree's root and its faces stay the root's: the regions fill the
+  // box to rounding at every level.
   for (const double e : total_error) EXPECT_LE(e, 1e-10);
 }
 

@@ -189,6 +189,34 @@ TEST(Refine, SurfaceFrontRefinesTowardItsInterfaces) {
   EXPECT_GT(fine, 100);
 }
 
+// A layered model fills its box: the root starts at the box (all six faces are the root's
+// for the unit cube, and no leaf is cut by them); other domains get the 5% margin all round,
+// and a margin that is set is kept.
+TEST(Refine, RootOfADomainFillingItsBoxIsTheBox) {
+  const auto layers = make_builtin_domain("layers6");
+  ASSERT_TRUE(layers->fills_bounds());
+  OctreeOptions options;
+  options.level = 2;
+  const Octree tree = build_octree(*layers, options);
+  EXPECT_EQ(tree.world({0, 0, 0}), Vec3::Zero());
+  EXPECT_EQ(tree.cell_size(0), 1.0);
+
+  options.margin = 0.05;
+  const RootCube grown = octree_root(*layers, options);
+  EXPECT_NEAR(grown.side, 1.1, 1e-15);
+  EXPECT_LT((grown.origin - Vec3::Constant(-0.05)).norm(), 1e-15);
+
+  const auto ball = make_builtin_domain("ball");
+  ASSERT_FALSE(ball->fills_bounds());
+  const RootCube around = octree_root(*ball, OctreeOptions{});
+  const Box3 box = ball->bounds();
+  EXPECT_NEAR(around.side, 1.1 * box.size().maxCoeff(), 1e-12);
+  EXPECT_LT((around.origin + Vec3::Constant(0.5 * around.side) - box.centre()).norm(), 1e-12);
+
+  options.margin = -1.0;
+  EXPECT_THROW(octree_root(*layers, options), InputError);
+}
+
 TEST(Refine, LimitsAreInputErrors) {
   const auto domain = make_builtin_domain("ball");
   OctreeOptions options;

@@ -5,9 +5,9 @@
 //   geometry_study DOMAIN --method cutcell|midpoint|staircase --levels A..B
 //                  [--spacing F] [--feature-band K] [--margin M] [--clearance C]
 // DOMAIN: builtin:NAME or a domain file (.json). Samples are h/F apart (default F = 6); the
-// feature band is K h (default 2); M is the octree's margin around the bounding box (0 puts a
-// box-shaped domain's faces on the octree grid); C is CutcellOptions::vertex_clearance (0 moves
-// no grid vertex off the interfaces). Exact volumes: builtin_region_volumes for built-in domains,
+// feature band is K h (default 2); M is the octree's margin around the bounding box (default:
+// OctreeOptions'; 0 puts a box-shaped domain's faces on the octree grid); C is
+// CutcellOptions::vertex_clearance (0 moves no grid vertex off the interfaces). Exact volumes: builtin_region_volumes for built-in domains,
 // the solid's own volume for a file holding one analytic primitive.
 #include <nlohmann/json.hpp>
 
@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "geometric_error.hpp"
@@ -33,7 +34,7 @@ struct Arguments {
   std::string domain, method;
   int first = 0, last = 0;
   double spacing = 6.0, band = 2.0;
-  double margin = OctreeOptions{}.margin;
+  std::optional<double> margin;  // unset: the octree's default
   double clearance = CutcellOptions{}.vertex_clearance;
 };
 
@@ -64,7 +65,7 @@ bool parse(int argc, char** argv, Arguments& a) {
   }
   return argc % 2 == 0 && (a.method == "cutcell" || a.method == "midpoint" ||
                            a.method == "staircase") &&
-         a.first >= 1 && a.last >= a.first && a.spacing > 0.0 && a.band >= 0.0 && a.margin >= 0.0 &&
+         a.first >= 1 && a.last >= a.first && a.spacing > 0.0 && a.band >= 0.0 && a.margin.value_or(0.0) >= 0.0 &&
          a.clearance >= 0.0;
 }
 
@@ -83,11 +84,8 @@ std::map<Index, double> exact_volumes(const std::string& name, const Domain& dom
   return {};
 }
 
-// The octree's cell edge at `level` (OctreeOptions: the root is the bounding box's largest
-// side grown by the margin on both sides).
 double cell_size(const Domain& domain, const OctreeOptions& octree, int level) {
-  const Box3 b = domain.bounds();
-  return b.size().maxCoeff() * (1.0 + 2.0 * octree.margin) / std::ldexp(1.0, level);
+  return std::ldexp(octree_root(domain, octree).side, -level);
 }
 
 nlohmann::json one_sided(const geometry::OneSided& s) {

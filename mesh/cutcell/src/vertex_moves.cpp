@@ -193,6 +193,11 @@ bool Mover::move(Index v, const Around& around) {
       if ((scale == 1.0 && d.cwiseAbs().sum() < 2.0) || d.isZero()) continue;
       candidates.push_back(x + scale * step * d.normalized());
     }
+  // A vertex on the root's boundary stays on it: the mesh's outer faces stay the root's.
+  const GridPoint& c = grid_.vertices.coords[v];
+  for (int k = 0; k < 3; ++k)
+    if (c[k] == 0 || c[k] == kOctreeGrid)
+      for (Vec3& p : candidates) p[k] = x[k];
   double best = nearest.fraction;
   bool resolved = false;
   std::optional<std::pair<Vec3, Index>> chosen;

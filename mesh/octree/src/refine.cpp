@@ -187,6 +187,19 @@ void refine_toward(Octree& tree, const Domain& domain, int level) {
   }
 }
 
+RootCube octree_root(const Domain& domain, const OctreeOptions& options) {
+  if (options.margin && (!(*options.margin >= 0.0) || !std::isfinite(*options.margin)))
+    throw InputError("octree: the margin must be a non-negative number");
+  const Box3 box = domain.bounds();
+  const Vec3 extent = box.size();
+  if (!box.lo.allFinite() || !box.hi.allFinite() || !(extent.minCoeff() >= 0.0) ||
+      !(extent.maxCoeff() > 0.0))
+    throw InputError("domain: empty or unbounded bounding box; nothing to mesh");
+  if (!options.margin && domain.fills_bounds()) return {box.lo, extent.maxCoeff()};
+  const double side = extent.maxCoeff() * (1.0 + 2.0 * options.margin.value_or(0.05));
+  return {box.centre() - Vec3::Constant(0.5 * side), side};
+}
+
 Octree build_octree(const Domain& domain, const OctreeOptions& options) {
   check_level(options.level);
   if (options.level == 0)
@@ -197,16 +210,8 @@ Octree build_octree(const Domain& domain, const OctreeOptions& options) {
     check_level(f.level);
     if (!f.surface) throw InputError("octree: a surface front without a surface");
   }
-  if (!(options.margin >= 0.0) || !std::isfinite(options.margin))
-    throw InputError("octree: the margin must be a non-negative number");
-
-  const Box3 box = domain.bounds();
-  const Vec3 extent = box.size();
-  if (!box.lo.allFinite() || !box.hi.allFinite() || !(extent.minCoeff() >= 0.0) ||
-      !(extent.maxCoeff() > 0.0))
-    throw InputError("domain: empty or unbounded bounding box; nothing to mesh");
-  const double side = extent.maxCoeff() * (1.0 + 2.0 * options.margin);
-  Octree tree(box.centre() - Vec3::Constant(0.5 * side), side);
+  const RootCube root = octree_root(domain, options);
+  Octree tree(root.origin, root.side);
 
   const int base = std::min(options.base_level, options.level);
   refine(tree, [base](const Octree&, Index) { return true; }, std::max(base, 0));

@@ -39,6 +39,9 @@ class Domain {
   virtual Vec3 normal(const Vec3& p) const = 0;
   // A box containing every point with region != 0.
   virtual Box3 bounds() const = 0;
+  // Whether every point of bounds() lies in a region (a layered model): the box's faces are
+  // then the domain's boundary, and an octree whose root starts at the box need not cut them.
+  virtual bool fills_bounds() const { return false; }
   // The region labels that occur (>= 1), sorted.
   virtual std::vector<Index> regions() const = 0;
   // Name of the interface nearest to p, for tagging boundary faces (e.g. "inner", "outer");

@@ -98,6 +98,7 @@ class LayeredDomain final : public Domain {
   std::vector<Crossing> crossings(const Vec3& a, const Vec3& b) const override;
   Vec3 normal(const Vec3& p) const override;
   Box3 bounds() const override;  // the box
+  bool fills_bounds() const override { return true; }
   // The labels seen along a 32 x 32 grid of vertical lines through the box: a layer
   // thinner than box/32 everywhere could be missed.
   std::vector<Index> regions() const override;

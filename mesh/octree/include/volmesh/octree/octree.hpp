@@ -24,6 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -187,10 +188,21 @@ struct OctreeOptions {
   int level = 4;         // depth at the domain's boundaries and interfaces
   int base_level = 3;    // uniform depth (capped at `level`) before the interface criterion
                          // starts, so that features between coarse grid edges are seen
-  double margin = 0.05;  // root = the bounding box's largest side * (1 + 2 margin), centred
+  // Root = the bounding box's largest side * (1 + 2 margin), centred on the box. Unset: 0.05,
+  // except for a domain that fills its bounding box, whose root then starts at the box's
+  // lower corner with the box's largest side: its box faces are the root's (all of them
+  // for a cube) and are not cut.
+  std::optional<double> margin;
   std::vector<BoxFront> boxes;
   std::vector<SurfaceFront> surfaces;
 };
+
+// The root cube of build_octree: its lower corner and side (see OctreeOptions::margin).
+struct RootCube {
+  Vec3 origin;
+  double side;
+};
+RootCube octree_root(const Domain& domain, const OctreeOptions& options);
 
 // The root cube around domain.bounds(), refined toward the boundaries and interfaces (and the
 // fronts), balanced. Throws InputError for a level beyond kOctreeMaxLevel ("--level 25
