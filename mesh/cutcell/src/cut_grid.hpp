@@ -119,6 +119,15 @@ std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);
 // sliver. Split, the vertex becomes a corner of edges that the moves clear.
 std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance);
 
+// Splits these leaves (selected by the two rules above on a grid of the tree, each below
+// max_level) and then, round by round, the leaves the rules select among those the splits
+// created or touched, evaluated from the tree and the domain (and that grid's vertices and
+// edge memo, for what they know) alone, until none is selected: the grid of the result has
+// none to select. clearance as for leaves_thin_at_face_centres (0: the first rule alone).
+// Returns the number of rounds.
+int split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
+                         const EdgeMemo& memo, std::vector<Index> leaves, int max_level, double clearance);
+
 // Past the deepest level a leaf edge may still change region twice (a layer thinner than
 // the cell): its midpoint vertex takes the region of the edge's lower corner, so that every
 // side of a face holds at most one interface point. Returns the number of vertices relabelled.
@@ -144,6 +153,13 @@ void contour_faces(Grid& grid);
 // point splits its leaf; a face interface point that left its face splits the leaves around
 // the face when below max_level.
 std::vector<Index> leaves_for_face_points(const Grid& grid, int max_level);
+
+// The leaves of the unit cells around grid point p (up to eight inside the root), each once.
+struct LeavesAround {
+  std::array<Index, 8> leaf{};
+  int count = 0;
+};
+LeavesAround leaves_around(const Octree& tree, const GridPoint& p);
 
 // Quarter (bu + 2 bv) of big's face that the small leaf's face covers.
 int quarter_of(const OctreeLeaf& small, const OctreeLeaf& big, int axis);

@@ -66,16 +66,17 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     progress("interface points", 0.2);
     grid = make_grid(tree, domain, settings, grid.vertices);
     find_edge_points(grid, memo);
-    // Both rules in one pass: each pass rebuilds the whole grid.
+    // Both rules on the whole grid; then on the leaves their splits touch, until none
+    // applies, and a grid of the new tree to check.
+    const double clearance = settings.exact ? options.vertex_clearance : 0.0;
     std::vector<Index> split = leaves_crossed_twice(grid, crossing_level);
-    if (settings.exact && options.vertex_clearance > 0.0) {
-      const std::vector<Index> thin =
-          leaves_thin_at_face_centres(grid, crossing_level, options.vertex_clearance);
+    if (clearance > 0.0) {
+      const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance);
       split.insert(split.end(), thin.begin(), thin.end());
     }
     if (!split.empty()) {
-      split_leaves(tree, split);
-      ++st.refinement_passes;
+      st.refinement_passes +=
+          split_by_extra_rules(tree, domain, grid.vertices, memo, std::move(split), crossing_level, clearance);
       continue;
     }
     st.relabelled_vertices = relabel_midpoints(grid);

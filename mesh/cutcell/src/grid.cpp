@@ -52,6 +52,27 @@ void classify_leaves(Grid& grid) {
   });
 }
 
+LeavesAround leaves_around(const Octree& tree, const GridPoint& p) {
+  LeavesAround out;
+  for (int octant = 0; octant < 8; ++octant) {
+    GridPoint q = p;
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      if (octant >> k & 1) {
+        inside = q[k] > 0;
+        q[k] -= 1;
+      } else {
+        inside = q[k] < kOctreeGrid;
+      }
+    }
+    if (!inside) continue;
+    const Index leaf = tree.leaf_containing(q);
+    if (leaf != kNoIndex && std::find(out.leaf.begin(), out.leaf.begin() + out.count, leaf) == out.leaf.begin() + out.count)
+      out.leaf[out.count++] = leaf;
+  }
+  return out;
+}
+
 int quarter_of(const OctreeLeaf& small, const OctreeLeaf& big, int axis) {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const int lo = std::min(u, v), hi = std::max(u, v);

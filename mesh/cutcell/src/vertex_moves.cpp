@@ -25,24 +25,8 @@ struct Around {
 Around around_vertex(const Grid& grid, Index v) {
   const Octree& tree = *grid.tree;
   const OctreeVertices& verts = grid.vertices;
-  const GridPoint c = verts.coords[v];
-  std::vector<Index> leaves;
-  for (int octant = 0; octant < 8; ++octant) {
-    GridPoint q = c;
-    bool inside = true;
-    for (int k = 0; k < 3; ++k) {
-      if (octant >> k & 1) {
-        inside = inside && q[k] > 0;
-        q[k] -= inside ? 1 : 0;
-      } else {
-        inside = inside && q[k] < kOctreeGrid;
-      }
-    }
-    if (!inside) continue;
-    const Index leaf = tree.leaf_containing(q);
-    if (leaf != kNoIndex && std::find(leaves.begin(), leaves.end(), leaf) == leaves.end())
-      leaves.push_back(leaf);
-  }
+  const LeavesAround around = leaves_around(tree, verts.coords[v]);
+  const std::span<const Index> leaves(around.leaf.data(), around.count);
   Around out;
   const auto add = [&out, v](Index w) {
     if (w != kNoIndex && w != v && std::find(out.ends.begin(), out.ends.end(), w) == out.ends.end())

@@ -118,11 +118,15 @@ class Balancer {
 
 }  // namespace
 
-void split_balanced(Octree& tree, std::vector<Index> leaves) {
+std::vector<OctreeLeaf> split_balanced(Octree& tree, std::vector<Index> leaves) {
+  std::vector<OctreeLeaf> split;
   std::vector<Node> pending;  // internal nodes whose condition is still to be checked
   std::array<GridPoint, 6> q;
   for (;;) {
-    for (const Index i : leaves) pending.push_back({tree.leaf(i).anchor, tree.leaf(i).level});
+    for (const Index i : leaves) {
+      pending.push_back({tree.leaf(i).anchor, tree.leaf(i).level});
+      split.push_back(tree.leaf(i));
+    }
     tree.split(leaves);
     leaves.clear();
     std::vector<Node> unmet;
@@ -140,7 +144,7 @@ void split_balanced(Octree& tree, std::vector<Index> leaves) {
       // One split of a much coarser leaf may not be enough: check again after it.
       if (!met) unmet.push_back(node);
     }
-    if (leaves.empty()) return;
+    if (leaves.empty()) return split;
     std::sort(leaves.begin(), leaves.end());
     leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
     pending = std::move(unmet);

@@ -155,8 +155,9 @@ void balance(Octree& tree);
 // Splits the listed leaves of a balanced tree (each below kOctreeMaxLevel) and restores the
 // balance around them only: each split leaf's 18 face and edge neighbours of its size must
 // exist, which may split coarser leaves, whose neighbours are checked in turn. Cheaper than
-// balance() when the splits are a fraction of the tree.
-void split_balanced(Octree& tree, std::vector<Index> leaves);
+// balance() when the splits are a fraction of the tree. Returns every leaf it split (the
+// listed ones and those the balance took), as they were.
+std::vector<OctreeLeaf> split_balanced(Octree& tree, std::vector<Index> leaves);
 
 // A leaf is selected by `select(tree, leaf)`; refine() splits every selected leaf below
 // max_level, rebalances, and evaluates `select` again on the whole new tree, until no leaf
