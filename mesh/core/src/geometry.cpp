@@ -1,5 +1,7 @@
 #include "volmesh/core/geometry.hpp"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace volmesh {
@@ -96,13 +98,14 @@ CellGeometry cell_geometry(const PolyMesh& mesh, std::span<const Index> faces, I
   return {volume, centre};
 }
 
+// Both cores; each face and cell on its own, so the result does not depend on the split.
 MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces) {
   MeshGeometry g;
   g.faces.resize(mesh.num_faces());
-  for (Index f = 0; f < mesh.num_faces(); ++f) g.faces[f] = face_geometry(mesh, f);
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) { g.faces[f] = face_geometry(mesh, f); });
   g.cells.resize(mesh.num_cells());
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    g.cells[c] = cell_geometry(mesh, cell_faces.of(c), c, g.faces);
+  tbb::parallel_for(Index{0}, mesh.num_cells(),
+                    [&](Index c) { g.cells[c] = cell_geometry(mesh, cell_faces.of(c), c, g.faces); });
   return g;
 }
 

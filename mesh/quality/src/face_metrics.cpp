@@ -1,5 +1,7 @@
 #include "volmesh/quality/face_metrics.hpp"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -16,23 +18,23 @@ double non_orthogonality_deg(const Vec3& d, const Vec3& s) {
 
 std::vector<double> face_non_orthogonality(const PolyMesh& mesh, const MeshGeometry& geometry) {
   std::vector<double> out(mesh.num_faces());
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
     const FaceGeometry& face = geometry.faces[f];
     const Vec3& owner = geometry.cells[mesh.owner[f]].centre;
     const Vec3& other =
         mesh.is_boundary(f) ? face.centre : geometry.cells[mesh.neighbour[f]].centre;
     out[f] = non_orthogonality_deg(other - owner, face.area_vector);
-  }
+  });
   return out;
 }
 
 std::vector<double> face_skewness(const PolyMesh& mesh, const MeshGeometry& geometry) {
   std::vector<double> out(mesh.num_faces());
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
     const Vec3* neighbour = mesh.is_boundary(f) ? nullptr : &geometry.cells[mesh.neighbour[f]].centre;
     out[f] = face_skewness(geometry.faces[f], mesh.points, mesh.face(f),
                            geometry.cells[mesh.owner[f]].centre, neighbour);
-  }
+  });
   return out;
 }
 
