@@ -4,6 +4,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
+#include <span>
 
 #include "assemble.hpp"
 
@@ -11,10 +12,24 @@ namespace volmesh::cutcell {
 namespace {
 
 struct FaceOut {
-  std::vector<PointKey> loop;
+  std::size_t first = 0, size = 0;  // its loop in FaceBlock::keys
   Index owner = kNoIndex, neighbour = kNoIndex;
   bool surface = false;  // boundary face on an interface (tag from the domain's name)
   Vec3 centre = Vec3::Zero();
+};
+
+// The faces a block of leaves emits, their loops in one array: a vector per face cost a
+// million small allocations (and their frees, on one core) on builtin:primitives 7/7.
+struct FaceBlock {
+  std::vector<PointKey> keys;
+  std::vector<FaceOut> faces;
+  std::span<const PointKey> loop(const FaceOut& o) const { return {keys.data() + o.first, o.size}; }
+  // Starts a face whose loop the caller appends to keys, then closes with end_face.
+  FaceOut& begin_face() {
+    faces.emplace_back().first = keys.size();
+    return faces.back();
+  }
+  void end_face() { faces.back().size = keys.size() - faces.back().first; }
 };
 
 // Fixed blocks of leaves: the output order does not depend on the thread count.
@@ -40,8 +55,8 @@ class Assembler {
     const int inputs = static_cast<int>(lc.keys.size());
     return local < inputs ? lc.keys[local] : kCellKey + first_new_point_[cut] + (local - inputs);
   }
-  void emit_leaf(Index leaf, std::vector<FaceOut>& out) const;
-  void emit_fine_face(Index leaf, int f, Index other, int other_slot, std::vector<FaceOut>& out) const;
+  void emit_leaf(Index leaf, FaceBlock& out) const;
+  void emit_fine_face(Index leaf, int f, Index other, int other_slot, FaceBlock& out) const;
 
   const Grid& grid_;
   const Octree& tree_;
@@ -61,34 +76,35 @@ Vec3 Assembler::position(PointKey key) const {
 }
 
 void Assembler::emit_fine_face(Index leaf, int f, Index other, int other_slot,
-                               std::vector<FaceOut>& out) const {
+                               FaceBlock& out) const {
   const Index face = grid_.face_index.find(std::uint64_t(leaf) * 6 + std::uint64_t(f));
   const Index r = face == kNoIndex ? kNoIndex : grid_.face_result[face];
   if (r == kNoIndex) {  // one region over the whole face
-    std::vector<Index> loop;
+    thread_local std::vector<Index> loop;
+    loop.clear();
     leaf_face_loop(grid_.vertices, leaf, f, loop);
     if (grid_.region[loop[0]] == 0) return;
-    FaceOut o;
-    o.loop.assign(loop.begin(), loop.end());
+    FaceOut& o = out.begin_face();
     o.owner = cell_of(leaf, 4 * f, 0);
     o.neighbour = cell_of(other, other_slot, 0);
-    out.push_back(std::move(o));
+    out.keys.insert(out.keys.end(), loop.begin(), loop.end());
+    out.end_face();
     return;
   }
   const FaceResult& result = grid_.results[r];
   const std::vector<FacePolygon>& polygons = result.contour.polygons;
   for (int k = 0; k < static_cast<int>(polygons.size()); ++k) {
     if (polygons[k].region == 0) continue;
-    FaceOut o;
-    for (int i : polygons[k].points)
-      o.loop.push_back(i < static_cast<int>(result.boundary.size()) ? result.boundary[i] : kFaceKey + face);
+    FaceOut& o = out.begin_face();
     o.owner = cell_of(leaf, 4 * f, k);
     o.neighbour = cell_of(other, other_slot, k);
-    out.push_back(std::move(o));
+    for (int i : polygons[k].points)
+      out.keys.push_back(i < static_cast<int>(result.boundary.size()) ? result.boundary[i] : kFaceKey + face);
+    out.end_face();
   }
 }
 
-void Assembler::emit_leaf(Index leaf, std::vector<FaceOut>& out) const {
+void Assembler::emit_leaf(Index leaf, FaceBlock& out) const {
   for (int f = 0; f < 6; ++f) {
     const FaceNeighbours nb = tree_.face_neighbours(leaf, f);
     switch (nb.kind) {
@@ -112,15 +128,15 @@ void Assembler::emit_leaf(Index leaf, std::vector<FaceOut>& out) const {
   if (c == kNoIndex) return;
   const CellSplit& split = cuts_[c].split;
   const auto interface = [&](auto points, int lower, int higher) {
-    FaceOut o;
-    for (int p : points) o.loop.push_back(leaf_point(c, p));
+    FaceOut& o = out.begin_face();
+    for (int p : points) out.keys.push_back(leaf_point(c, p));
+    out.end_face();
     o.owner = piece_cell_[c][higher];
     o.neighbour = piece_cell_[c][lower];
     if (o.neighbour == kNoIndex) {
       o.surface = true;
-      for (PointKey k : o.loop) o.centre += position(k) / static_cast<double>(o.loop.size());
+      for (PointKey k : out.loop(o)) o.centre += position(k) / static_cast<double>(o.size);
     }
-    out.push_back(std::move(o));
   };
   for (const PieceTriangle& t : split.triangles) interface(t.points, t.lower, t.higher);
   for (const PiecePolygon& p : split.polygons) interface(p.points, p.lower, p.higher);
@@ -166,7 +182,7 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   first_cell_[leaves] = static_cast<Index>(cell_region.size());
 
   const Index blocks = (leaves + kBlock - 1) / kBlock;
-  std::vector<std::vector<FaceOut>> faces(blocks);
+  std::vector<FaceBlock> faces(blocks);
   tbb::parallel_for(Index{0}, blocks, [&](Index b) {
     for (Index i = b * kBlock; i < std::min(leaves, (b + 1) * kBlock); ++i) emit_leaf(i, faces[b]);
   });
@@ -174,9 +190,8 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   // Points in use, numbered by kind and then by key.
   std::vector<std::uint8_t> used_vertex(grid_.position.size(), 0), used_edge(grid_.edges.size(), 0),
       used_face(grid_.faces.size(), 0), used_new(new_points_.size(), 0);
-  for (const auto& block : faces)
-    for (const FaceOut& o : block)
-      for (PointKey k : o.loop) {
+  for (const FaceBlock& block : faces)
+    for (PointKey k : block.keys) {
         if (k < kEdgeKey) used_vertex[k] = 1;
         else if (k < kFaceKey) used_edge[k - kEdgeKey] = 1;
         else if (k < kCellKey) used_face[k - kFaceKey] = 1;
@@ -208,16 +223,16 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   // Boundary tags: the domain's surface names, computed on both cores.
   std::vector<std::vector<std::string>> names(blocks);
   tbb::parallel_for(Index{0}, blocks, [&](Index b) {
-    for (const FaceOut& o : faces[b])
+    for (const FaceOut& o : faces[b].faces)
       if (o.surface) names[b].push_back(grid_.domain->boundary_name(o.centre));
   });
   mesh.cell_region = std::move(cell_region);
   std::vector<Index> loop;
   for (Index b = 0; b < blocks; ++b) {
     std::size_t named = 0;
-    for (const FaceOut& o : faces[b]) {
+    for (const FaceOut& o : faces[b].faces) {
       loop.clear();
-      for (PointKey k : o.loop) loop.push_back(point_id(k));
+      for (PointKey k : faces[b].loop(o)) loop.push_back(point_id(k));
       Index tag = kNoIndex;
       if (o.neighbour == kNoIndex) {
         const std::string name = o.surface ? names[b][named++] : std::string();
