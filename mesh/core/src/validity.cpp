@@ -1,7 +1,12 @@
 #include "volmesh/core/validity.hpp"
 
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <span>
 #include <sstream>
 #include <tuple>
 
@@ -104,32 +109,37 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
   r.points = m.num_points();
   if (!check_indices(m, r, p)) return r;
 
+  // Each face's vertices sorted, in one array laid out as the faces' (both cores).
+  std::vector<Index> sorted(m.face_vertices);
+  tbb::parallel_for(Index{0}, m.num_faces(), [&](Index f) {
+    std::sort(sorted.begin() + m.face_offsets[f], sorted.begin() + m.face_offsets[f + 1]);
+  });
+  const auto sorted_of = [&](Index f) {
+    return std::span<const Index>(sorted.data() + m.face_offsets[f], sorted.data() + m.face_offsets[f + 1]);
+  };
   std::vector<char> used(m.num_points(), 0);
   for (Index f = 0; f < m.num_faces(); ++f) {
     if (m.is_boundary(f)) ++r.boundary_faces;
-    auto loop = m.face(f);
-    for (Index v : loop) used[v] = 1;
-    std::vector<Index> sorted(loop.begin(), loop.end());
-    std::sort(sorted.begin(), sorted.end());
-    if (loop.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    for (Index v : m.face(f)) used[v] = 1;
+    const auto key = sorted_of(f);
+    if (key.size() < 3 || std::adjacent_find(key.begin(), key.end()) != key.end())
       p.add(r.degenerate_faces, "face ", f, ": repeated vertex or fewer than 3 vertices");
   }
   r.unused_points = static_cast<Index>(std::count(used.begin(), used.end(), 0));
 
   // Duplicate faces: the same vertex set twice means a face shared by more than two cells.
   {
-    std::vector<std::pair<std::vector<Index>, Index>> keys(m.num_faces());
-    for (Index f = 0; f < m.num_faces(); ++f) {
-      auto loop = m.face(f);
-      keys[f].first.assign(loop.begin(), loop.end());
-      std::sort(keys[f].first.begin(), keys[f].first.end());
-      keys[f].second = f;
-    }
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 1; i < keys.size(); ++i)
-      if (keys[i].first == keys[i - 1].first)
-        p.add(r.duplicate_faces, "faces ", keys[i - 1].second, " and ", keys[i].second,
-              " have the same vertices");
+    std::vector<Index> order(m.num_faces());
+    std::iota(order.begin(), order.end(), Index{0});
+    tbb::parallel_sort(order.begin(), order.end(), [&](Index a, Index b) {
+      const auto ka = sorted_of(a), kb = sorted_of(b);
+      if (std::lexicographical_compare(ka.begin(), ka.end(), kb.begin(), kb.end())) return true;
+      if (std::lexicographical_compare(kb.begin(), kb.end(), ka.begin(), ka.end())) return false;
+      return a < b;
+    });
+    for (std::size_t i = 1; i < order.size(); ++i)
+      if (std::ranges::equal(sorted_of(order[i]), sorted_of(order[i - 1])))
+        p.add(r.duplicate_faces, "faces ", order[i - 1], " and ", order[i], " have the same vertices");
   }
 
   const CellFaces cf = build_cell_faces(m);
@@ -140,24 +150,30 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
 
   r.min_cell_volume = m.num_cells() ? g.cells[0].volume : 0.0;
   r.max_cell_volume = r.min_cell_volume;
-  std::vector<EdgeUse> edges;
-  for (Index c = 0; c < m.num_cells(); ++c) {
-    const auto faces = cf.of(c);
+  // Per cell on both cores, reported in order.
+  std::vector<double> closedness(m.num_cells());
+  std::vector<Index> unmatched(m.num_cells());
+  tbb::parallel_for(Index{0}, m.num_cells(), [&](Index c) {
+    thread_local std::vector<EdgeUse> edges;
     Vec3 sum = Vec3::Zero();
     double total = 0.0;
     edges.clear();
-    for (Index f : faces) {
+    for (Index f : cf.of(c)) {
       const int s = face_sign(m, f, c);
       sum += s * g.faces[f].area_vector;
       total += g.faces[f].area_vector.norm();
       add_loop_edges(m.face(f), s < 0, 0, edges);
     }
-    const double closedness = total > 0.0 ? sum.norm() / total : 1.0;
-    r.max_closedness = std::max(r.max_closedness, closedness);
-    if (faces.size() < 4 || closedness > opt.closed_tolerance)
-      p.add(r.open_cells, "cell ", c, ": not closed (", faces.size(),
-            " faces, |sum of face area vectors| / sum of areas = ", closedness, ")");
-    if (const Index n = count_unmatched(edges))
+    closedness[c] = total > 0.0 ? sum.norm() / total : 1.0;
+    unmatched[c] = count_unmatched(edges);
+  });
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    const std::size_t faces = cf.of(c).size();
+    r.max_closedness = std::max(r.max_closedness, closedness[c]);
+    if (faces < 4 || closedness[c] > opt.closed_tolerance)
+      p.add(r.open_cells, "cell ", c, ": not closed (", faces,
+            " faces, |sum of face area vectors| / sum of areas = ", closedness[c], ")");
+    if (const Index n = unmatched[c])
       p.add(r.unmatched_cell_edges, "cell ", c, ": ", n,
             " edges not matched by an opposite edge (a T-junction or a missing face)");
     const double v = g.cells[c].volume;
@@ -169,7 +185,7 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
   }
 
   // Each region's boundary (outer boundary and interfaces) must be a closed surface.
-  edges.clear();
+  std::vector<EdgeUse> edges;
   for (Index f = 0; f < m.num_faces(); ++f) {
     const Index ro = m.cell_region[m.owner[f]];
     const Index rn = m.is_boundary(f) ? 0 : m.cell_region[m.neighbour[f]];
