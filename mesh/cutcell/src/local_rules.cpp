@@ -115,49 +115,62 @@ std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Kno
       if (v.has_centre[f]) at.push_back(v.centre[f]);
     first[k + 1] = at.size();
   }
+  // Each point not known yet is queried once, however many leaves share it.
+  constexpr std::size_t kKnown = ~std::size_t{0};
   std::vector<Index> region(at.size());
-  std::vector<std::size_t> unknown;
-  for (std::size_t j = 0; j < at.size(); ++j)
-    if (const std::optional<Index> r = known.region(at[j]))
+  std::vector<std::size_t> query_of(at.size(), kKnown);
+  std::map<std::uint64_t, std::size_t> query_at;
+  std::vector<GridPoint> asked;
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    if (const std::optional<Index> r = known.region(at[j])) {
       region[j] = *r;
-    else
-      unknown.push_back(j);
-  std::vector<Vec3> points(unknown.size());
-  std::vector<Index> queried(unknown.size());
-  for (std::size_t j = 0; j < unknown.size(); ++j) points[j] = tree.world(at[unknown[j]]);
-  domain.region(points, queried);
-  for (std::size_t j = 0; j < unknown.size(); ++j) {
-    region[unknown[j]] = queried[j];
-    known.add_region(at[unknown[j]], queried[j]);
+      continue;
+    }
+    const auto [it, fresh] = query_at.emplace(morton_encode(at[j]), asked.size());
+    if (fresh) asked.push_back(at[j]);
+    query_of[j] = it->second;
   }
+  std::vector<Vec3> points(asked.size());
+  std::vector<Index> queried(asked.size());
+  for (std::size_t q = 0; q < asked.size(); ++q) points[q] = tree.world(asked[q]);
+  domain.region(points, queried);
+  for (std::size_t q = 0; q < asked.size(); ++q) known.add_region(asked[q], queried[q]);
+  for (std::size_t j = 0; j < at.size(); ++j)
+    if (query_of[j] != kKnown) region[j] = queried[query_of[j]];
   std::vector<std::size_t> cut;
   for (std::size_t k = 0; k < n; ++k)
     if (std::any_of(region.begin() + first[k], region.begin() + first[k + 1],
                     [&](Index r) { return r != region[first[k]]; }))
       cut.push_back(k);
 
-  // Per cut leaf: its fine edges (two where the leaf edge has a midpoint; the crossings of
-  // those not known are queried as the grid would, from the lower end), then one segment per
+  // Per cut leaf: its fine edges (two where the leaf edge has a midpoint; each one not
+  // known yet queried once, as the grid would, from its lower end), then one segment per
   // transition face from its centre one edge into the leaf (edge -1).
   struct Segment {
     std::size_t leaf;  // in cut
     int edge;
-    EdgeMemo::Key key;
-    int crossings = -1;  // -1: to query
+    int crossings = 0;
+    std::size_t query = kKnown;
   };
   std::vector<Segment> segments;
   std::vector<Vec3> a, b;
-  std::vector<std::size_t> queried_segment;
+  std::vector<std::optional<EdgeMemo::Key>> query_edge;  // per query: the fine edge, if one
+  std::map<EdgeMemo::Key, std::size_t> edge_query;
   for (std::size_t j = 0; j < cut.size(); ++j) {
     const LeafVertices& v = verts[cut[j]];
     const auto add_edge = [&](const GridPoint& p, const GridPoint& q, int e) {
-      Segment s{j, e, Known::key(p, q)};
-      if (const std::optional<int> c = known.crossings(s.key)) {
+      Segment s{j, e};
+      const EdgeMemo::Key key = Known::key(p, q);
+      if (const std::optional<int> c = known.crossings(key)) {
         s.crossings = *c;
       } else {
-        queried_segment.push_back(segments.size());
-        a.push_back(tree.world(morton_decode(s.key.first)));
-        b.push_back(tree.world(morton_decode(s.key.second)));
+        const auto [it, fresh] = edge_query.emplace(key, a.size());
+        if (fresh) {
+          a.push_back(tree.world(morton_decode(key.first)));
+          b.push_back(tree.world(morton_decode(key.second)));
+          query_edge.push_back(key);
+        }
+        s.query = it->second;
       }
       segments.push_back(s);
     };
@@ -175,31 +188,30 @@ std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Kno
         if (v.has_centre[f]) {
           const Vec3 from = tree.world(v.centre[f]);
           const double size = tree.cell_size(tree.leaf(below[cut[j]]).level);
-          queried_segment.push_back(segments.size());
-          segments.push_back({j, -1, {}});
+          segments.push_back({j, -1, 0, a.size()});
           a.push_back(from);
           b.push_back(from + (f & 1 ? -1.0 : 1.0) * size * Vec3::Unit(f / 2));
+          query_edge.push_back(std::nullopt);
         }
   }
   std::vector<std::vector<Crossing>> hits;
   domain.crossings(a, b, hits);
+  std::vector<int> query_crossings(a.size(), 0);
+  for (std::size_t q = 0; q < a.size(); ++q)
+    if (query_edge[q]) {
+      query_crossings[q] = std::min(transversal(hits[q]), 255);
+      known.add_crossings(*query_edge[q], query_crossings[q]);
+    }
 
   std::vector<std::uint8_t> flag(cut.size(), 0);
   std::vector<std::array<int, 12>> crossings(cut.size(), std::array<int, 12>{});
-  const auto count = [&](const Segment& s, int c) {
-    if ((crossings[s.leaf][s.edge] += c) > 1) flag[s.leaf] = 1;
-  };
-  for (const Segment& s : segments)
-    if (s.crossings >= 0) count(s, s.crossings);
-  for (std::size_t k = 0; k < queried_segment.size(); ++k) {
-    const Segment& s = segments[queried_segment[k]];
+  for (const Segment& s : segments) {
     if (s.edge >= 0) {
-      const int c = std::min(transversal(hits[k]), 255);
-      known.add_crossings(s.key, c);
-      count(s, c);
+      const int c = s.query == kKnown ? s.crossings : query_crossings[s.query];
+      if ((crossings[s.leaf][s.edge] += c) > 1) flag[s.leaf] = 1;
       continue;
     }
-    for (const Crossing& c : hits[k])
+    for (const Crossing& c : hits[s.query])
       if (c.before != c.after) {
         if (c.t < clearance) flag[s.leaf] = 1;
         break;
