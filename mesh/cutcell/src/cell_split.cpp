@@ -420,7 +420,8 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
   const bool on_boundary = loop.lower == 0;
   if (options_.exact_points) {
     const EdgeNormals fit = fitted_points(loop.points);
-    const std::vector<Vec3>&s = fit.points, &n = fit.normals;
+    const std::vector<Vec3>& s = fit.points;
+    const std::vector<Vec3>& n = fit.normals;
     // A junction with the domain's boundary lies on the boundary: its points fitted first.
     if (s.size() >= 2)
       if (const auto feature = sharp_feature(s, n, options_.feature, fit.level)) {
@@ -485,7 +486,8 @@ void Splitter::smooth_candidates(const std::vector<int>& loop, bool on_boundary,
   for (int p : loop) mass += position_[p] / static_cast<double>(loop.size());
   std::optional<Candidate> surface;
   const EdgeNormals fit = fitted_points(loop);
-  const std::vector<Vec3>&s = fit.points, &n = fit.normals;
+  const std::vector<Vec3>& s = fit.points;
+  const std::vector<Vec3>& n = fit.normals;
   if (!s.empty())
     if (const auto p = clamp_component(loop, s, n, on_boundary, tangent_intersection(s, n, mass, 1), options_.reach, 1))
       surface = Candidate{LoopMethod::surface_fan, triangulate_fan(loop, fan_centre(loop, *p))};

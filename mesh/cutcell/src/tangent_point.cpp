@@ -123,7 +123,7 @@ std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<con
   else
     phi = 1.0;  // opposite normals: a thin sheet, treat as a corner
   const bool corner = phi > thresholds.phi;
-  return Feature{fit(points, normals, level, mass_point(points), corner ? 3 : 2, 0.1), corner};
+  return Feature{tangent_intersection_ranked(points, normals, level, corner ? 3 : 2), corner};
 }
 
 }  // namespace volmesh::cutcell
