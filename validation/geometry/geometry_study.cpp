@@ -4,11 +4,13 @@
 // within a band around the sharp edges. One JSON object per level on stdout.
 //   geometry_study DOMAIN --method cutcell|midpoint|staircase --levels A..B
 //                  [--spacing F] [--feature-band K] [--margin M] [--clearance C]
+//                  [--split-gap G]
 // DOMAIN: builtin:NAME or a domain file (.json). Samples are h/F apart (default F = 6); the
 // feature band is K h (default 2); M is the octree's margin around the bounding box (default:
 // OctreeOptions'; 0 puts a box-shaped domain's faces on the octree grid); C is
-// CutcellOptions::vertex_clearance (0 moves no grid vertex off the interfaces). Exact volumes: builtin_region_volumes for built-in domains,
-// the solid's own volume for a file holding one analytic primitive.
+// CutcellOptions::vertex_clearance (0 moves no grid vertex off the interfaces); G is
+// CutcellOptions::split_gap. Exact volumes: builtin_region_volumes for built-in domains, the
+// solid's own volume for a file holding one analytic primitive.
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -36,11 +38,12 @@ struct Arguments {
   double spacing = 6.0, band = 2.0;
   std::optional<double> margin;  // unset: the octree's default
   double clearance = CutcellOptions{}.vertex_clearance;
+  double split_gap = CutcellOptions{}.split_gap;
 };
 
 constexpr const char* kUsage =
     "usage: geometry_study DOMAIN --method cutcell|midpoint|staircase --levels A..B "
-    "[--spacing F] [--feature-band K] [--margin M] [--clearance C]";
+    "[--spacing F] [--feature-band K] [--margin M] [--clearance C] [--split-gap G]";
 
 bool parse(int argc, char** argv, Arguments& a) {
   if (argc < 2) return false;
@@ -59,6 +62,8 @@ bool parse(int argc, char** argv, Arguments& a) {
       a.margin = std::stod(value);
     } else if (key == "--clearance") {
       a.clearance = std::stod(value);
+    } else if (key == "--split-gap") {
+      a.split_gap = std::stod(value);
     } else {
       return false;
     }
@@ -66,7 +71,7 @@ bool parse(int argc, char** argv, Arguments& a) {
   return argc % 2 == 0 && (a.method == "cutcell" || a.method == "midpoint" ||
                            a.method == "staircase") &&
          a.first >= 1 && a.last >= a.first && a.spacing > 0.0 && a.band >= 0.0 && a.margin.value_or(0.0) >= 0.0 &&
-         a.clearance >= 0.0;
+         a.clearance >= 0.0 && a.split_gap > 0.0 && a.split_gap <= 1.0;
 }
 
 std::unique_ptr<Domain> load(const std::string& name) {
@@ -105,25 +110,28 @@ nlohmann::json run_level(const Arguments& a, const Domain& domain,
   octree.margin = a.margin;
   const auto start = Clock::now();
   PolyMesh mesh;
-  Index cut_cells = 0;
+  Index cut_cells = 0, bad_faces = 0;
   if (a.method == "staircase") {
     mesh = staircase_mesh(domain, StaircaseOptions{octree, {}});
   } else {
     CutcellOptions options;
     options.octree = octree;
     options.vertex_clearance = a.clearance;
+    options.split_gap = a.split_gap;
     options.interface_points =
         a.method == "midpoint" ? InterfacePoints::midpoint : InterfacePoints::exact;
     CutcellStats stats;
     mesh = cutcell_mesh(domain, options, &stats);
     cut_cells = stats.cut_cells;
+    bad_faces = stats.bad_faces;
   }
   const double mesh_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   const double h = cell_size(domain, octree, level);
 
   nlohmann::json row = {{"domain", a.domain}, {"method", a.method}, {"level", level},
                         {"h", h},             {"cells", mesh.num_cells()},
-                        {"cut_cells", cut_cells}, {"mesh_seconds", mesh_seconds}};
+                        {"cut_cells", cut_cells}, {"bad_faces", bad_faces},
+                        {"mesh_seconds", mesh_seconds}};
   const std::map<Index, double> volumes = geometry::region_volumes(mesh);
   double total = 0.0, exact_total = 0.0, max_region_error = 0.0;
   nlohmann::json regions = nlohmann::json::object();
