@@ -149,6 +149,35 @@ TEST(FaceContour, SideCrossedTwiceKeepsBothCrossings) {
   EXPECT_EQ(std::count(middle.points.begin(), middle.points.end(), 3), 1);
 }
 
+// A junction line passing just beside side 3 (the napkin circle of builtin:primitives, where
+// the cylinder leaves the ball, 2e-4 above a grid face): side 3 is crossed twice closer than
+// the split gap, one crossing standing for both with the thin region 4 between them
+// pinched out. That crossing is the junction; the tangent lines at side 1's crossings,
+// nearly parallel and tilted by the surfaces' curvature, meet half a face away.
+TEST(FaceContour, PinchedCrossingIsTheJunction) {
+  FaceInput f;
+  const auto vertex = [&f](const Vec3& p, Index region) { f.boundary.push_back({p, region, Vec3::Zero()}); };
+  const auto crossing = [&f](const Vec3& p, const Vec3& normal, Index pinched = kNoIndex) {
+    f.boundary.push_back({p, kNoIndex, normal.normalized(), pinched});
+  };
+  f.corners = {0, 1, 5, 6};
+  vertex(kCorner[0], 5);
+  vertex(kCorner[1], 5);
+  crossing(Vec3(1, 0.4697, 0), Vec3(0.02, 1, 0));  // into the wedge of region 4
+  vertex(Vec3(1, 0.5, 0), 4);                       // the split vertex
+  crossing(Vec3(1, 0.5303, 0), Vec3(-0.02, 1, 0));
+  vertex(kCorner[2], 0);
+  vertex(kCorner[3], 0);
+  crossing(Vec3(0, 0.5003, 0), Vec3::Zero(), 4);     // 0 -> 4 -> 5 within 6e-4
+  const FaceContour c = contour_face(f);
+  ASSERT_EQ(c.kind, FacePointKind::interface_point);
+  EXPECT_EQ(c.centre, 7);
+  EXPECT_TRUE(c.point.isApprox(Vec3(0, 0.5003, 0)));
+  expect_partition(f, c);
+  const std::vector<Vec3> p = points_of(f, c);
+  EXPECT_NEAR(polygon_area(p, c.polygons[polygon_of_corner(f, c, 0)]), 0.5 * (0.4697 + 0.5003), 1e-12);
+}
+
 // A CAD part's sharp edge (fandisk's) running along a side, just inside or just outside it
 // (the vertex moves put it there): the feature point is kept on the kept polygon, pulled just
 // inside the face when it lies beyond. Refused, the chord cut the edge off by half a cell.

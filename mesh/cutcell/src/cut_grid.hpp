@@ -31,6 +31,10 @@ struct EdgePoint {
   // point lies on. Otherwise (an edge still crossed several times at the deepest level) the
   // normal is left out of the least-squares points.
   bool exact = false;
+  // An edge crossed twice whose one crossing stands for both (closer than the split gap,
+  // or left whole for its faces' sake): the region between them, which pinches out beside
+  // it; kNoIndex otherwise.
+  Index pinched = kNoIndex;
 };
 
 struct FineFace {

@@ -42,8 +42,12 @@ void split_doubly_crossed_edges(Grid& grid, double min_gap) {
     const Crossing &first = h[0], &second = h[1];
     const Index middle = first.after;
     if (first.before != grid.region[a] || second.before != middle || second.after != grid.region[b] ||
-        middle == grid.region[a] || middle == grid.region[b] || second.t - first.t < min_gap)
+        middle == grid.region[a] || middle == grid.region[b])
       continue;
+    if (second.t - first.t < min_gap) {
+      grid.edge_point[e].pinched = middle;
+      continue;
+    }
     const Index x = static_cast<Index>(grid.position.size());
     grid.position.push_back(0.5 * (first.point + second.point));
     grid.region.push_back(middle);

@@ -91,6 +91,7 @@ class Contourer {
     return len > 1e-12 ? Vec3(m / len) : Vec3::Zero();
   }
   Vec3 tangent_point(const std::vector<int>& points) const;
+  int pinched_point() const;
   Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
@@ -229,6 +230,22 @@ int Contourer::nearest_side_point(const Vec3& p) const {
   return point;
 }
 
+// The interface point of a three-region junction that stands for two crossings (a side
+// still crossed twice at the deepest level, its crossings not both kept) of the third
+// region, or -1. That region pinches out there: the junction meets the side within the gap, where
+// the tangent lines of the other points, nearly parallel beside a junction line running
+// along the face, meet anywhere.
+int Contourer::pinched_point() const {
+  if (crossing_.size() != 3) return -1;
+  for (int i : crossing_) {
+    const Index middle = at(i).pinched;
+    if (middle == kNoIndex) continue;
+    for (int j : crossing_)
+      if (j != i && (region_before(j) == middle || region_after(j) == middle)) return i;
+  }
+  return -1;
+}
+
 // The face interface point joined to every edge point. When the least-squares point lies at
 // a side (the junction meets the face next to its edge), it lands on that side's edge point
 // if there is one (§3.3: the two coincide), otherwise it is pushed inside.
@@ -239,7 +256,10 @@ void Contourer::star() {
     const Vec3 p = tangent_point(crossing_);
     const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
     const int side_point = nearest_side_point(p);
-    if (depth_inside(frame_, p) >= margin) {
+    if (const int pinched = pinched_point(); pinched >= 0) {
+      centre = pinched;
+      out_.point = at(pinched).position;
+    } else if (depth_inside(frame_, p) >= margin) {
       out_.point = p;
     } else if (side_point >= 0 && (at(side_point).position - p).norm() <= reach) {
       centre = side_point;

@@ -63,7 +63,7 @@ std::optional<FaceResult> contour(const Grid& grid, const FineFace& face) {
       const Index e = grid.find_edge(from, to);
       const EdgePoint& p = grid.edge_point[e];
       const Vec3 normal = grid.settings.exact && !p.exact ? Vec3::Zero() : p.normal;
-      input.boundary.push_back({p.point, kNoIndex, from < to ? normal : Vec3(-normal)});
+      input.boundary.push_back({p.point, kNoIndex, from < to ? normal : Vec3(-normal), p.pinched});
       result.boundary.push_back(kEdgeKey + e);
     };
     add_vertex(u);
@@ -91,6 +91,15 @@ std::vector<Index> changing_edges(const Grid& grid, const FineFace& face) {
   return out;
 }
 
+// Edge e's split undone: its one crossing stands for both again, the split vertex's region
+// pinched out beside it.
+void leave_whole(Grid& grid, Index e) {
+  if (const Index x = grid.split_vertex[e]; x != kNoIndex) {
+    grid.edge_point[e].pinched = grid.region[x];
+    grid.split_vertex[e] = kNoIndex;
+  }
+}
+
 // M3S takes at most four interface points on a face: the edges of a face that their split
 // vertices would give more are left whole. Counted before any is undone, so the result
 // does not depend on the order.
@@ -104,7 +113,7 @@ void keep_faces_contourable(Grid& grid) {
   });
   for (std::size_t i = 0; i < grid.faces.size(); ++i)
     if (too_many[i])
-      for (const Index e : changing_edges(grid, grid.faces[i])) grid.split_vertex[e] = kNoIndex;
+      for (const Index e : changing_edges(grid, grid.faces[i])) leave_whole(grid, e);
 }
 
 // Split vertices that a polygon of the contour holds with their two crossings alone.
@@ -167,8 +176,7 @@ void contour_faces(Grid& grid) {
       if (results[i])
         for (const PointKey x : lens_vertices(grid, *results[i])) unsplit.push_back(x);
     if (unsplit.empty()) break;
-    for (const PointKey x : unsplit)
-      grid.split_vertex[grid.split_edge[x - grid.vertices.num_vertices()]] = kNoIndex;
+    for (const PointKey x : unsplit) leave_whole(grid, grid.split_edge[x - grid.vertices.num_vertices()]);
     std::sort(unsplit.begin(), unsplit.end());
     todo.clear();
     for (std::size_t i = 0; i < results.size(); ++i)

@@ -18,6 +18,8 @@ struct BoundaryPoint {
   Vec3 normal = Vec3::Zero();  // interface points: unit normal from the region before the
                                // point (in boundary order) into the region after it; zero
                                // when unknown (the point is then left out of the fits)
+  // An interface point standing for two crossings: the region between them, else kNoIndex.
+  Index pinched = kNoIndex;
   bool is_interface() const { return region == kNoIndex; }
 };
 
