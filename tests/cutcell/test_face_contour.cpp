@@ -63,8 +63,9 @@ void expect_partition(const FaceInput& f, const FaceContour& c) {
     EXPECT_GT(a, 0.0);
     total += a;
     for (int i : poly.points)
-      if (i < static_cast<int>(f.boundary.size()) && !f.boundary[i].is_interface())
+      if (i < static_cast<int>(f.boundary.size()) && !f.boundary[i].is_interface()) {
         EXPECT_EQ(f.boundary[i].region, poly.region);
+      }
   }
   EXPECT_NEAR(total, 1.0, 1e-12);
   for (const ContourSegment& s : c.segments) {

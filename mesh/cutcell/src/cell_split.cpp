@@ -112,6 +112,7 @@ class Splitter {
   bool normals_are_sharp(std::span<const Vec3> normals) const;
   bool junction_may_bend(const EdgeNormals& edges, const Vec3& junction) const;
   bool junction_bends(const std::vector<int>& face_points, const Vec3& fitted) const;
+  bool junction_along_link(const EdgeNormals& edges, const std::vector<int>& face_points) const;
   std::vector<Candidate> candidates(const Loop& loop);
   double worst_badness(const std::vector<std::vector<Triangle>>& triangles) const;
   // Puts back the first candidates moved into `triangles`.
@@ -298,6 +299,18 @@ bool Splitter::junction_bends(const std::vector<int>& face_points, const Vec3& f
   return distance_to_segment(fitted, position_[face_points[0]], position_[face_points[1]]) > options_.bend * size_;
 }
 
+// Whether the edge points' normals leave free only the direction of the link between the
+// two face interface points: surfaces crossing along a line through both (a cylinder
+// through a plane), which the link follows to O(h^2). Their least-squares point
+// extrapolates the tangent planes of far edge points across the cell and may lie well off
+// the line.
+bool Splitter::junction_along_link(const EdgeNormals& edges, const std::vector<int>& face_points) const {
+  const std::optional<Vec3> line = free_direction(edges.normals);
+  if (!line) return false;
+  const Vec3 link = position_[face_points[1]] - position_[face_points[0]];
+  return std::abs(line->dot(link)) > 0.9 * link.norm();
+}
+
 // Components per pair of regions: cycles of surface segments, and paths between face
 // interface points closed through the link between two of them or through the cell point.
 void Splitter::build_loops() {
@@ -322,7 +335,7 @@ void Splitter::build_loops() {
     const std::optional<Vec3> junction =
         edges.points.empty() ? std::nullopt
                              : std::optional(tangent_intersection_ranked(edges.points, edges.normals, edges.level, 3));
-    if (nif > 2 || (junction && junction_may_bend(edges, *junction))) {
+    if (nif > 2 || (junction && junction_may_bend(edges, *junction) && !junction_along_link(edges, face_points))) {
       const std::optional<Vec3> fitted = junction ? fitted_cell_point(edges, *junction) : std::nullopt;
       if (nif > 2 || (fitted && junction_bends(face_points, *fitted)))
         centre = cell_point(face_points, fitted, edges);

@@ -5,12 +5,14 @@
 #include "volmesh/cutcell/face_contour.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/cutcell/curve_crossing.hpp"
 #include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
@@ -92,6 +94,7 @@ class Contourer {
   }
   Vec3 tangent_point(const std::vector<int>& points) const;
   int pinched_point() const;
+  std::optional<Vec3> x_junction() const;
   Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
@@ -188,6 +191,13 @@ bool Contourer::try_feature_point(int p, int q) {
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
   Vec3 point = tangent_point({p, q});
+  // On a face warped by the vertex moves, nearly parallel to one of the tangent planes, the
+  // two traces in its mean plane meet off the feature: the point goes to the nearest point
+  // of the planes' intersection (no move on a plane face, where the traces meet on it).
+  {
+    const std::array<Vec3, 2> s{at(p).position, at(q).position}, n{at(p).normal, at(q).normal};
+    if (!n[0].isZero() && !n[1].isZero()) point = tangent_intersection(s, n, point, 2);
+  }
   // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
   // just beyond: pulled just inside, it keeps the face's polygons apart.
   const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;
@@ -246,6 +256,22 @@ int Contourer::pinched_point() const {
   return -1;
 }
 
+// Two interfaces crossing in the face (four crossings, the opposite ones on the same surface:
+// their normals along the boundary opposite, the two surfaces' transversal): where the
+// curves through each pair cross.
+std::optional<Vec3> Contourer::x_junction() const {
+  if (crossing_.size() != 4) return std::nullopt;
+  std::array<CurveEnds, 2> curves;
+  for (int k = 0; k < 2; ++k) {
+    const int i = crossing_[k], j = crossing_[k + 2];
+    const Vec3 ni = projected_normal(i), nj = -projected_normal(j);
+    if (ni.isZero() || nj.isZero() || !(ni.dot(nj) > 0.5)) return std::nullopt;
+    curves[k] = {{at(i).position, at(j).position}, {ni, nj}};
+  }
+  if (!(std::abs(curves[0].normal[0].dot(curves[1].normal[0])) < 0.95)) return std::nullopt;
+  return crossing_of_curves(curves[0], curves[1], frame_.normal);
+}
+
 // The face interface point joined to every edge point. When the least-squares point lies at
 // a side (the junction meets the face next to its edge), it lands on that side's edge point
 // if there is one (§3.3: the two coincide), otherwise it is pushed inside.
@@ -253,7 +279,8 @@ void Contourer::star() {
   out_.kind = FacePointKind::interface_point;
   int centre = face_point_index();
   if (options_.exact_points) {
-    const Vec3 p = tangent_point(crossing_);
+    const std::optional<Vec3> crossing = x_junction();
+    const Vec3 p = crossing ? *crossing : tangent_point(crossing_);
     const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
     const int side_point = nearest_side_point(p);
     if (const int pinched = pinched_point(); pinched >= 0) {
