@@ -154,7 +154,9 @@ double farthest_interface_vertex(const PolyMesh& mesh, const AnalyticDomain& dom
 // Hausdorff 0.36 h at levels 5 and 6, mesh vertices up to 0.076 h off the surfaces. Then
 // 0.076 h at level 5, where the cylinder crosses the plane x = 0 (the junction point of a
 // face and of a cell extrapolated the cylinder's far tangents), and vertices 0.047 h off
-// at level 6, a rim's feature point on a face warped nearly parallel to the cap.
+// at level 6, a rim's feature point on a face warped nearly parallel to the cap; then
+// 0.040 h, from the cylinder's tangent plane 0.9 h away (now 0.016 h, after a Newton step
+// onto the true surfaces).
 TEST(GeometricConvergence, PrimitivesJunctionsAndRimsStayOnTheSurfaces) {
   const std::unique_ptr<Domain> domain = make_builtin_domain("primitives");
   const auto& primitives = dynamic_cast<const AnalyticDomain&>(*domain);
@@ -162,7 +164,7 @@ TEST(GeometricConvergence, PrimitivesJunctionsAndRimsStayOnTheSurfaces) {
     const PolyMesh mesh = mesh_of(primitives, Method::cutcell, level);
     const double h = cell_size(primitives, level);
     EXPECT_LE(hausdorff(mesh, primitives, {h / 4.0, 0.0}).all.hausdorff(), 0.06 * h) << "level " << level;
-    EXPECT_LE(farthest_interface_vertex(mesh, primitives), 0.045 * h) << "level " << level;
+    EXPECT_LE(farthest_interface_vertex(mesh, primitives), 0.032 * h) << "level " << level;
   }
 }
 

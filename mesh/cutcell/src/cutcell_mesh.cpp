@@ -56,6 +56,17 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
   settings.face.feature_theta = settings.cell.feature.theta = options.feature_theta;
   settings.cell.feature.phi = options.feature_phi;
   settings.cell.skewness_limit = options.skewness_limit;
+  if (settings.exact)
+    settings.face.surface_near = [&domain](const Vec3& x, const Vec3& d) {
+      std::optional<std::pair<Vec3, Vec3>> best;
+      double nearest = 1.0;
+      for (const Crossing& c : domain.crossings(x - d, x + d))
+        if (c.before != c.after && c.normal.dot(d) > 0.9 * d.norm() && std::abs(c.t - 0.5) < nearest) {
+          nearest = std::abs(c.t - 0.5);
+          best = {c.point, c.normal};
+        }
+      return best;
+    };
   const int level = options.octree.level;
   const int crossing_level = std::min(kOctreeMaxLevel, level + options.crossing_levels);
   const int face_level = std::min(kOctreeMaxLevel, level + options.face_point_levels);

@@ -95,6 +95,7 @@ class Contourer {
   Vec3 tangent_point(const std::vector<int>& points) const;
   int pinched_point() const;
   std::optional<Vec3> x_junction() const;
+  Vec3 onto_surfaces(int p, int q, const Vec3& x) const;
   Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
@@ -186,6 +187,35 @@ bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   return true;
 }
 
+// Feature point x of the surfaces through edge points p and q after one Newton step: each
+// surface found again beside x (along its normal moved into the other's tangent plane, a
+// quarter face either way, 0.1 face along the surface away from the edge: on the other
+// surface's plane the segment could run along it) and x moved to where the new tangent
+// planes meet (kept on the domain's boundary planes, as tangent_point keeps it). x itself
+// when either is not found or the step is not small.
+Vec3 Contourer::onto_surfaces(int p, int q, const Vec3& x) const {
+  // Both normals out of the region before p (the one after q).
+  const Vec3 na = at(p).normal, nb = -at(q).normal;
+  if (na.isZero() || nb.isZero()) return x;
+  // The surfaces bound the region they point into where both normals point into it from
+  // the chord p-q (it is convex at the edge), else where either does.
+  const Vec3 mid = 0.5 * (at(p).position + at(q).position);
+  const double side = na.dot(mid - x) + nb.dot(mid - x) > 0.0 ? 1.0 : -1.0;
+  const double reach = 0.25 * frame_.size;
+  std::array<Vec3, 2> s, n;
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 &own = k == 0 ? na : nb, &other = k == 0 ? nb : na;
+    const Vec3 along = own - own.dot(other) * other;
+    if (!(along.norm() > 0.5)) return x;
+    const auto found = options_.surface_near(x + side * 0.4 * reach * other, reach * along.normalized());
+    if (!found || !(found->second.dot(own) > 0.9)) return x;
+    s[k] = found->first;
+    n[k] = found->second;
+  }
+  const Vec3 refined = onto_boundary({p, q}, tangent_intersection(s, n, x, 2));
+  return (refined - x).norm() < 0.05 * frame_.size ? refined : x;
+}
+
 bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
@@ -198,6 +228,7 @@ bool Contourer::try_feature_point(int p, int q) {
     const std::array<Vec3, 2> s{at(p).position, at(q).position}, n{at(p).normal, at(q).normal};
     if (!n[0].isZero() && !n[1].isZero()) point = tangent_intersection(s, n, point, 2);
   }
+  if (options_.surface_near && !face_.on_root) point = onto_surfaces(p, q, point);
   // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
   // just beyond: pulled just inside, it keeps the face's polygons apart.
   const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;

@@ -49,6 +49,7 @@ std::optional<FaceResult> contour(const Grid& grid, const FineFace& face) {
     return std::nullopt;
   FaceResult result;
   FaceInput input;
+  input.on_root = face.other == kNoIndex;
   int corner = 0;
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const Index u = loop[i], w = loop[(i + 1) % loop.size()];
