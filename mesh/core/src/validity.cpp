@@ -133,9 +133,8 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
     std::iota(order.begin(), order.end(), Index{0});
     tbb::parallel_sort(order.begin(), order.end(), [&](Index a, Index b) {
       const auto ka = sorted_of(a), kb = sorted_of(b);
-      if (std::lexicographical_compare(ka.begin(), ka.end(), kb.begin(), kb.end())) return true;
-      if (std::lexicographical_compare(kb.begin(), kb.end(), ka.begin(), ka.end())) return false;
-      return a < b;
+      const auto c = std::lexicographical_compare_three_way(ka.begin(), ka.end(), kb.begin(), kb.end());
+      return c != 0 ? c < 0 : a < b;
     });
     for (std::size_t i = 1; i < order.size(); ++i)
       if (std::ranges::equal(sorted_of(order[i]), sorted_of(order[i - 1])))

@@ -192,11 +192,11 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
       used_face(grid_.faces.size(), 0), used_new(new_points_.size(), 0);
   for (const FaceBlock& block : faces)
     for (PointKey k : block.keys) {
-        if (k < kEdgeKey) used_vertex[k] = 1;
-        else if (k < kFaceKey) used_edge[k - kEdgeKey] = 1;
-        else if (k < kCellKey) used_face[k - kFaceKey] = 1;
-        else used_new[k - kCellKey] = 1;
-      }
+      if (k < kEdgeKey) used_vertex[k] = 1;
+      else if (k < kFaceKey) used_edge[k - kEdgeKey] = 1;
+      else if (k < kCellKey) used_face[k - kFaceKey] = 1;
+      else used_new[k - kCellKey] = 1;
+    }
   PolyMesh mesh;
   std::vector<Index> vertex_id(used_vertex.size(), kNoIndex), edge_id(used_edge.size(), kNoIndex),
       face_id(used_face.size(), kNoIndex), new_id(used_new.size(), kNoIndex);

@@ -95,7 +95,7 @@ class Contourer {
   Vec3 tangent_point(const std::vector<int>& points) const;
   int pinched_point() const;
   std::optional<Vec3> x_junction() const;
-  Vec3 onto_surfaces(int p, int q, const Vec3& x) const;
+  Vec3 onto_feature(int p, int q, Vec3 x) const;
   Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
@@ -187,16 +187,23 @@ bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
   return true;
 }
 
-// Feature point x of the surfaces through edge points p and q after one Newton step: each
-// surface found again beside x (along its normal moved into the other's tangent plane, a
-// quarter face either way, 0.1 face along the surface away from the edge: on the other
-// surface's plane the segment could run along it) and x moved to where the new tangent
-// planes meet (kept on the domain's boundary planes, as tangent_point keeps it). x itself
-// when either is not found or the step is not small.
-Vec3 Contourer::onto_surfaces(int p, int q, const Vec3& x) const {
+// The feature point of the surfaces through edge points p and q, from their traces' meeting
+// point x in the face's mean plane, put on the sharp edge itself:
+// - On a face warped by the vertex moves, nearly parallel to one of the tangent planes, the
+//   traces meet off the edge: x goes to the nearest point of the planes' intersection (no
+//   move on a plane face, where the traces meet on it).
+// - Then, given surface_near and off the root's boundary (a point between two layers there
+//   must stay in the box's plane), one Newton step: each surface found again beside x (along
+//   its normal moved into the other's tangent plane, a quarter face either way, 0.1 face
+//   along the surface away from the edge: on the other surface's plane the segment could
+//   run along it) and x moved to where the new tangent planes meet (kept on the domain's
+//   boundary planes, as tangent_point keeps it), unless the step is not small.
+Vec3 Contourer::onto_feature(int p, int q, Vec3 x) const {
   // Both normals out of the region before p (the one after q).
   const Vec3 na = at(p).normal, nb = -at(q).normal;
   if (na.isZero() || nb.isZero()) return x;
+  x = tangent_intersection(std::array<Vec3, 2>{at(p).position, at(q).position}, std::array<Vec3, 2>{na, nb}, x, 2);
+  if (!options_.surface_near || face_.on_root) return x;
   // The surfaces bound the region they point into where both normals point into it from
   // the chord p-q (it is convex at the edge), else where either does.
   const Vec3 mid = 0.5 * (at(p).position + at(q).position);
@@ -220,15 +227,7 @@ bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
-  Vec3 point = tangent_point({p, q});
-  // On a face warped by the vertex moves, nearly parallel to one of the tangent planes, the
-  // two traces in its mean plane meet off the feature: the point goes to the nearest point
-  // of the planes' intersection (no move on a plane face, where the traces meet on it).
-  {
-    const std::array<Vec3, 2> s{at(p).position, at(q).position}, n{at(p).normal, at(q).normal};
-    if (!n[0].isZero() && !n[1].isZero()) point = tangent_intersection(s, n, point, 2);
-  }
-  if (options_.surface_near && !face_.on_root) point = onto_surfaces(p, q, point);
+  Vec3 point = onto_feature(p, q, tangent_point({p, q}));
   // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
   // just beyond: pulled just inside, it keeps the face's polygons apart.
   const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;
@@ -309,15 +308,17 @@ std::optional<Vec3> Contourer::x_junction() const {
 void Contourer::star() {
   out_.kind = FacePointKind::interface_point;
   int centre = face_point_index();
-  if (options_.exact_points) {
+  if (!options_.exact_points) {
+    out_.point = frame_.centre;
+  } else if (const int pinched = pinched_point(); pinched >= 0) {
+    centre = pinched;
+    out_.point = at(pinched).position;
+  } else {
     const std::optional<Vec3> crossing = x_junction();
     const Vec3 p = crossing ? *crossing : tangent_point(crossing_);
     const double margin = options_.margin * frame_.size, reach = options_.reach * frame_.size;
     const int side_point = nearest_side_point(p);
-    if (const int pinched = pinched_point(); pinched >= 0) {
-      centre = pinched;
-      out_.point = at(pinched).position;
-    } else if (depth_inside(frame_, p) >= margin) {
+    if (depth_inside(frame_, p) >= margin) {
       out_.point = p;
     } else if (side_point >= 0 && (at(side_point).position - p).norm() <= reach) {
       centre = side_point;
@@ -330,8 +331,6 @@ void Contourer::star() {
       for (int i : crossing_) mass += at(i).position / static_cast<double>(crossing_.size());
       out_.point = onto_boundary(crossing_, mass);
     }
-  } else {
-    out_.point = frame_.centre;
   }
   if (centre != face_point_index()) out_.centre = centre;
   const int m = static_cast<int>(crossing_.size());
