@@ -150,5 +150,44 @@ TEST(SharpFeature, BoxCornerIsACorner) {
   EXPECT_LT((f->point - Vec3(1, 1, 1)).norm(), 1e-12);
 }
 
+// The unit sphere and the planes x = 0 and y = 0 meet at (0, 0, 1). Their tangent planes at
+// points a tenth away meet 0.01 off it (the sphere's d^2 / 2r); found again beside that
+// point, the new planes meet within the square of that distance.
+TEST(PlanesNearFeature, OneNewtonStepOntoASphereAndTwoPlanes) {
+  const auto near = [](const Vec3& x, const Vec3& d) -> std::optional<std::pair<Vec3, Vec3>> {
+    std::optional<std::pair<Vec3, Vec3>> best;
+    double nearest = 2.0;
+    const auto keep = [&](double t, const Vec3& normal) {
+      if (std::abs(t) <= 1.0 && std::abs(normal.dot(d.normalized())) > 0.9 && std::abs(t) < nearest) {
+        nearest = std::abs(t);
+        best = {x + t * d, normal.dot(d) > 0 ? normal : Vec3(-normal)};
+      }
+    };
+    for (int axis : {0, 1})
+      if (d[axis] != 0.0) keep(-x[axis] / d[axis], Vec3::Unit(axis));
+    // |x + t d| = 1, the root nearest t = 0.
+    const double a = d.squaredNorm(), b = x.dot(d), c = x.squaredNorm() - 1.0;
+    if (const double disc = b * b - a * c; disc >= 0.0)
+      for (const double t : {(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a})
+        keep(t, (x + t * d).normalized());
+    return best;
+  };
+  const double r = 0.1;
+  const std::vector<Vec3> s{Vec3(r, r, std::sqrt(1.0 - 2.0 * r * r)), Vec3(0.0, r, 1.0 - r), Vec3(r, 0.0, 1.0 - r)};
+  const std::vector<Vec3> n{s[0].normalized(), -Vec3::UnitX(), -Vec3::UnitY()};
+  const Vec3 corner = Vec3::UnitZ();
+  const Vec3 fitted = tangent_intersection(s, n);
+  const double before = (fitted - corner).norm();
+  EXPECT_GT(before, 0.005);
+  const std::optional<TangentPlanes> planes = planes_near_feature(s, n, fitted, 0.05, 0.01, near);
+  ASSERT_TRUE(planes.has_value());
+  ASSERT_EQ(planes->points.size(), 3u);
+  EXPECT_LT((tangent_intersection(planes->points, planes->normals, fitted) - corner).norm(), 2.0 * before * before);
+  // One surface: nothing to meet. A surface not found again: no step.
+  EXPECT_FALSE(planes_near_feature(std::vector<Vec3>{s[0]}, std::vector<Vec3>{n[0]}, fitted, 0.05, 0.01, near));
+  const auto nowhere = [](const Vec3&, const Vec3&) { return std::optional<std::pair<Vec3, Vec3>>(); };
+  EXPECT_FALSE(planes_near_feature(s, n, fitted, 0.05, 0.01, nowhere));
+}
+
 }  // namespace
 }  // namespace volmesh::cutcell

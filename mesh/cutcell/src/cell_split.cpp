@@ -106,7 +106,8 @@ class Splitter {
   std::optional<Vec3> clamp_component(const std::vector<int>& loop, std::span<const Vec3> s,
                                       std::span<const Vec3> n, bool on_boundary, const Vec3& p,
                                       double reach, int max_rank) const;
-  std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges, const Vec3& junction) const;
+  Vec3 onto_surfaces(TangentPlanes& planes, const Vec3& x, int max_rank) const;
+  std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges, const Vec3& fit) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
                  const EdgeNormals& edges);
   bool normals_are_sharp(std::span<const Vec3> normals) const;
@@ -233,10 +234,29 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
   return r;
 }
 
+// x, where the tangent planes meet, moved by one Newton step onto the surfaces (at most
+// max_rank of them), and `planes` then the new ones; x itself without surface_near, when a
+// surface is not found again, or when the step is not small (the planes found are not those
+// meeting at x).
+Vec3 Splitter::onto_surfaces(TangentPlanes& planes, const Vec3& x, int max_rank) const {
+  if (!options_.exact_points || !options_.surface_near) return x;
+  const double reach = options_.newton_reach * size_;
+  const std::optional<TangentPlanes> found =
+      planes_near_feature(planes.points, planes.normals, x, reach, 0.4 * reach, options_.surface_near);
+  if (!found) return x;
+  const Vec3 p = tangent_intersection(found->points, found->normals, x, max_rank);
+  if (!((p - x).norm() < reach)) return x;
+  planes = *found;
+  return p;
+}
+
 // The least-squares junction point of the cell's edge points (those on the domain's boundary
-// fitted first: `junction`), moved inside the cell; nullopt when it lies beyond reach.
-std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges, const Vec3& junction) const {
+// fitted first: `fit`), on the true surfaces and moved inside the cell; nullopt when it
+// lies beyond reach.
+std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges, const Vec3& fit) const {
   const double margin = options_.junction_margin * size_, reach = options_.reach * size_;
+  TangentPlanes planes{edges.points, edges.normals};
+  const Vec3 junction = onto_surfaces(planes, fit, 3);
   std::optional<Vec3> p;
   // On a junction line (a sphere meeting a plane) the point slides along the line into the
   // cell, keeping down to a quarter of the margin where the line passes by a cell edge;
@@ -439,14 +459,17 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
     if (s.size() >= 2)
       if (const auto feature = sharp_feature(s, n, options_.feature, fit.level)) {
         if (!feature->corner) split_along_feature(loop.points, on_boundary, out);
+        const int rank = feature->corner ? 3 : 2;
+        TangentPlanes planes{s, n};
+        const Vec3 point = onto_surfaces(planes, feature->point, rank);
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
         // Not a box's corner, which the face's point on one of its edges would cut off.
-        const bool box_corner = feature->corner && on_boundary && on_octree_planes(s, n, feature->point);
-        if (const int on_face = box_corner ? -1 : face_point_near(loop, feature->point); on_face >= 0)
+        const bool box_corner = feature->corner && on_boundary && on_octree_planes(s, n, point);
+        if (const int on_face = box_corner ? -1 : face_point_near(loop, point); on_face >= 0)
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
-        else if (const auto p = clamp_component(loop.points, s, n, on_boundary, feature->point,
-                                                options_.feature_reach, feature->corner ? 3 : 2))
+        else if (const auto p = clamp_component(loop.points, planes.points, planes.normals, on_boundary,
+                                                point, options_.feature_reach, rank))
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, fan_centre(loop.points, *p))});
         if (!out.empty()) return out;
       }

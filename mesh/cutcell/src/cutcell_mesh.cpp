@@ -57,7 +57,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
   settings.cell.feature.phi = options.feature_phi;
   settings.cell.skewness_limit = options.skewness_limit;
   if (settings.exact)
-    settings.face.surface_near = [&domain](const Vec3& x, const Vec3& d) {
+    settings.face.surface_near = settings.cell.surface_near = [&domain](const Vec3& x, const Vec3& d) {
       std::optional<std::pair<Vec3, Vec3>> best;
       double nearest = 1.0;
       for (const Crossing& c : domain.crossings(x - d, x + d))

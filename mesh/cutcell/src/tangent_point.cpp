@@ -126,4 +126,36 @@ std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<con
   return Feature{tangent_intersection_ranked(points, normals, level, corner ? 3 : 2), corner};
 }
 
+std::optional<TangentPlanes> planes_near_feature(std::span<const Vec3> s, std::span<const Vec3> n,
+                                                 const Vec3& x, double reach, double shift,
+                                                 const SurfaceNear& near) {
+  constexpr double kSameSurface = 0.9;  // the cosine of 25 degrees, as surface_near's
+  std::vector<std::vector<std::size_t>> surfaces;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const auto same = std::find_if(surfaces.begin(), surfaces.end(),
+                                   [&](const auto& g) { return n[g[0]].dot(n[i]) > kSameSurface; });
+    if (same == surfaces.end()) surfaces.push_back({i});
+    else same->push_back(i);
+  }
+  if (surfaces.size() < 2) return std::nullopt;
+  TangentPlanes out;
+  for (const std::vector<std::size_t>& g : surfaces) {
+    std::size_t nearest = g[0];
+    Vec3 mass = Vec3::Zero();
+    for (const std::size_t i : g) {
+      if ((s[i] - x).squaredNorm() < (s[nearest] - x).squaredNorm()) nearest = i;
+      mass += s[i] / static_cast<double>(g.size());
+    }
+    const Vec3& m = n[nearest];
+    Vec3 along = (mass - x) - m.dot(mass - x) * m;
+    if (along.norm() > 1e-9 * reach) along = shift * along.normalized();
+    else along = Vec3::Zero();
+    const auto found = near(x + along, reach * m);
+    if (!found || !(found->second.dot(m) > kSameSurface)) return std::nullopt;
+    out.points.push_back(found->first);
+    out.normals.push_back(found->second);
+  }
+  return out;
+}
+
 }  // namespace volmesh::cutcell

@@ -84,6 +84,10 @@ struct CellOptions {
   // face (a sliver at any angle, except across a sharp edge its component keeps). 0 keeps
   // the trace a triangulation everywhere.
   double merge_angle = 60.0;
+  // Given (exact points), feature and cell interface points take one Newton step onto the
+  // true surfaces (planes_near_feature), looking newton_reach * size either way.
+  SurfaceNear surface_near;
+  double newton_reach = 0.25;
 };
 
 enum class LoopMethod : std::uint8_t {

@@ -2,13 +2,12 @@
 // M3S on one grid face (the octree paper, §2-3.3): the piecewise-linear contour of the
 // interfaces on a square face and the polygons it cuts the face into, one region each.
 #include <array>
-#include <functional>
 #include <optional>
-#include <utility>
 #include <cstdint>
 #include <vector>
 
 #include "volmesh/core/types.hpp"
+#include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
 
@@ -47,11 +46,9 @@ struct FaceContourOptions {
   // there is one within reach, or is pushed in; farther out it has left the face.
   double margin = 0.05;
   double reach = 0.25;
-  // The interface found again near x: the crossing nearest x of the segment x -+ d whose
-  // normal lies within 25 degrees of d, with that normal; nullopt if none. Given (exact
-  // points), a feature point takes one Newton step onto the true surfaces: found from
-  // tangent planes a face's width away, it is off a curved one by d^2 / 2r.
-  std::function<std::optional<std::pair<Vec3, Vec3>>(const Vec3& x, const Vec3& d)> surface_near;
+  // Given (exact points), a feature point takes one Newton step onto the true surfaces:
+  // found from tangent planes a face's width away, it is off a curved one by d^2 / 2r.
+  SurfaceNear surface_near;
 };
 
 enum class FacePointKind : std::uint8_t {

@@ -7,8 +7,11 @@
 // In a face, the normals projected on the face plane give the intersection of the tangent
 // lines; it stays in the plane of the s_i.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "volmesh/core/types.hpp"
 
@@ -35,6 +38,24 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
 // singular value at most relative_cutoff^2 of the largest): along a junction line, where the
 // tangent planes of two or more surfaces meet.
 std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff = 0.1);
+
+// The interface found again near x: the crossing nearest x of the segment x -+ d whose
+// normal lies within 25 degrees of d, with that normal; nullopt if none.
+using SurfaceNear = std::function<std::optional<std::pair<Vec3, Vec3>>(const Vec3& x, const Vec3& d)>;
+
+struct TangentPlanes {
+  std::vector<Vec3> points, normals;
+};
+// The tangent planes of the surfaces meeting at a feature point x, found again beside it:
+// the normals n (at points s) grouped into surfaces (within 25 degrees), each surface found
+// on the segment x -+ reach * m, m the normal of its point nearest x, moved `shift` along the
+// surface toward its points (a surface ending at the feature lies on that side). Where the
+// new planes meet is one Newton step from x: off the surfaces by the square of x's distance,
+// where the planes of points a cell away meet off a curved surface by d^2 / 2r. nullopt for
+// fewer than two surfaces, or one not found again.
+std::optional<TangentPlanes> planes_near_feature(std::span<const Vec3> s, std::span<const Vec3> n,
+                                                 const Vec3& x, double reach, double shift,
+                                                 const SurfaceNear& near);
 
 // Whether a unit normal is exactly an axis: the plane is parallel to the octree's faces (a
 // box's face), the only boundary planes points are moved back onto.
