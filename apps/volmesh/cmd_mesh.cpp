@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -38,6 +40,7 @@ struct MeshOptions {
   std::string interface_points = "exact";
   int level = 5;
   int base_level = OctreeOptions{}.base_level;
+  double feature_angle = 0.0;  // degrees; 0: the paper's threshold
   bool tets = false, json = false;
   int threads = 0;
 };
@@ -106,6 +109,7 @@ MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
   options.octree = octree_options(opt);
   options.interface_points =
       opt.interface_points == "midpoint" ? InterfacePoints::midpoint : InterfacePoints::exact;
+  if (opt.feature_angle > 0.0) options.feature_theta = std::cos(opt.feature_angle * std::numbers::pi / 180.0);
   options.progress = [&log](const std::string& stage, double) { log(stage); };
   CutcellStats stats;
   MethodResult r;
@@ -114,6 +118,7 @@ MethodResult mesh_cutcell(const Domain& domain, const MeshOptions& opt) {
                {"cut_cells", stats.cut_cells},
                {"max_leaf_level", stats.max_leaf_level},
                {"interface_points", opt.interface_points},
+               {"feature_angle", std::acos(options.feature_theta) * 180.0 / std::numbers::pi},
                {"moved_vertices", stats.moved_vertices},
                {"split_edges", stats.split_edges},
                {"feature_points", stats.feature_points},
@@ -161,6 +166,10 @@ int run_mesh(const MeshOptions& opt) {
   }
   if (opt.interface_points != "exact" && opt.method != "cutcell") {
     std::cerr << "volmesh mesh: --interface-points applies to the cutcell method only\n";
+    return 2;
+  }
+  if (opt.feature_angle > 0.0 && opt.method != "cutcell") {
+    std::cerr << "volmesh mesh: --feature-angle applies to the cutcell method only\n";
     return 2;
   }
   std::unique_ptr<tbb::global_control> threads;
@@ -236,6 +245,10 @@ Command add_mesh_command(CLI::App& root) {
   app->add_option("--interface-points", opt->interface_points,
                   "cutcell: exact crossings (default) or edge midpoints (M3C as published)")
       ->check(CLI::IsMember({"exact", "midpoint"}));
+  app->add_option("--feature-angle", opt->feature_angle,
+                  "cutcell: keep a bend of the surface sharper than this many degrees as a sharp "
+                  "edge (default 25.8, the paper's cosine 0.9)")
+      ->check(CLI::Range(1.0, 90.0));
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   app->add_option("--threads", opt->threads, "at most this many threads (default: all cores)")
       ->check(CLI::PositiveNumber);

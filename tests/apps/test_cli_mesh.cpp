@@ -138,6 +138,40 @@ TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   }
 }
 
+// A block with a gable roof whose two planes meet at 20 degrees, below the paper's feature
+// threshold (25.8): by default the ridge is rounded off, with --feature-angle 15 it is kept
+// and the volume comes out to the planar faces' accuracy.
+TEST(CliMesh, FeatureAngleKeepsAShallowRidge) {
+  const fs::path dir = test::scratch_dir("mesh-feature-angle");
+  const double deg = std::numbers::pi / 180.0, height = 0.4, ridge_y = 0.23;
+  const double ridge = height + ridge_y * std::tan(8.0 * deg);
+  const double width = ridge_y + (ridge - height) / std::tan(12.0 * deg);
+  const double volume = width * height + 0.5 * width * (ridge - height);
+  {
+    std::ofstream off(dir / "roof.off");
+    off.precision(17);
+    off << "OFF\n10 16 0\n0 0 0\n1 0 0\n1 " << width << " 0\n0 " << width << " 0\n0 0 " << height
+        << "\n1 0 " << height << "\n1 " << width << " " << height << "\n0 " << width << " " << height
+        << "\n0 " << ridge_y << " " << ridge << "\n1 " << ridge_y << " " << ridge << "\n";
+    for (const char* face : {"0 2 1", "0 3 2", "0 1 5", "0 5 4", "2 3 7", "2 7 6", "4 5 9", "4 9 8",
+                             "8 9 6", "8 6 7", "0 4 8", "0 8 7", "0 7 3", "1 2 6", "1 6 9", "1 9 5"})
+      off << "3 " << face << "\n";
+  }
+  const auto error = [&](const std::string& extra, double& angle) {
+    const auto r = run_volmesh("mesh cutcell " + (dir / "roof.off").string() + " --level 5 --json -o " +
+                                   (dir / "roof.vtu").string() + extra, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    angle = j["feature_angle"].get<double>();
+    return std::abs(j["validity"]["total_volume"].get<double>() - volume) / volume;
+  };
+  double angle = 0.0;
+  EXPECT_GT(error("", angle), 5e-5);
+  EXPECT_NEAR(angle, std::acos(0.9) / deg, 1e-9);
+  EXPECT_LT(error(" --feature-angle 15", angle), 1e-5);
+  EXPECT_NEAR(angle, 15.0, 1e-9);
+}
+
 TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
   const fs::path dir = test::scratch_dir("mesh-bad");
   const fs::path out = dir / "out.vtu";
@@ -173,7 +207,9 @@ TEST(CliMesh, BadUsageExitsWith2) {
         "mesh staircase builtin:ball -o x.vtu --level abc",
         "mesh staircase builtin:ball -o x.vtu --tets",
         "mesh staircase builtin:ball -o x.vtu --threads 0",
-        "mesh staircase builtin:ball -o x.vtu --base-level -1"}) {
+        "mesh staircase builtin:ball -o x.vtu --base-level -1",
+        "mesh staircase builtin:ball -o x.vtu --feature-angle 20",
+        "mesh cutcell builtin:ball -o x.vtu --feature-angle 0"}) {
     const auto r = run_volmesh(args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }
