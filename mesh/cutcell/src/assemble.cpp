@@ -77,7 +77,7 @@ Vec3 Assembler::position(PointKey key) const {
 
 void Assembler::emit_fine_face(Index leaf, int f, Index other, int other_slot,
                                FaceBlock& out) const {
-  const Index face = grid_.face_index.find(std::uint64_t(leaf) * 6 + std::uint64_t(f));
+  const Index face = grid_.find_face(leaf, f);
   const Index r = face == kNoIndex ? kNoIndex : grid_.face_result[face];
   if (r == kNoIndex) {  // one region over the whole face
     thread_local std::vector<Index> loop;

@@ -107,10 +107,6 @@ void LeafInput::add_face(Index face, int slot, bool outward) {
   }
 }
 
-Index find_face(const Grid& grid, Index leaf, int face) {
-  return grid.face_index.find(std::uint64_t(leaf) * 6 + std::uint64_t(face));
-}
-
 }  // namespace
 
 LeafCut cut_leaf(const Grid& grid, Index leaf) {
@@ -133,11 +129,11 @@ CellInput leaf_input(const Grid& grid, Index leaf, LeafCut& cut) {
   for (int f = 0; f < 6; ++f) {
     const FaceNeighbours nb = tree.face_neighbours(leaf, f);
     if (nb.kind == FaceKind::Finer) {
-      for (int q = 0; q < 4; ++q) input.add_face(find_face(grid, nb.leaves[q], opposite_face(f)), 4 * f + q, false);
+      for (int q = 0; q < 4; ++q) input.add_face(grid.find_face(nb.leaves[q], opposite_face(f)), 4 * f + q, false);
     } else if (nb.kind == FaceKind::Same && nb.leaves[0] < leaf) {
-      input.add_face(find_face(grid, nb.leaves[0], opposite_face(f)), 4 * f, false);
+      input.add_face(grid.find_face(nb.leaves[0], opposite_face(f)), 4 * f, false);
     } else {
-      input.add_face(find_face(grid, leaf, f), 4 * f, true);
+      input.add_face(grid.find_face(leaf, f), 4 * f, true);
     }
   }
   cut = std::move(input.cut());

@@ -159,9 +159,9 @@ void contour_faces(Grid& grid) {
                           [](const FineFace& a, const FineFace& b) { return a.leaf == b.leaf && a.face == b.face; }),
               faces.end());
   grid.faces = std::move(faces);
-  grid.face_index = KeyMap(grid.faces.size());
-  for (std::size_t i = 0; i < grid.faces.size(); ++i)
-    grid.face_index.insert(face_code(grid.faces[i].leaf, grid.faces[i].face), static_cast<Index>(i));
+  grid.first_face.assign(tree.num_leaves() + 1, 0);
+  for (const FineFace& face : grid.faces) ++grid.first_face[face.leaf + 1];
+  std::partial_sum(grid.first_face.begin(), grid.first_face.end(), grid.first_face.begin());
 
   keep_faces_contourable(grid);
   std::vector<std::optional<FaceResult>> results(grid.faces.size());
@@ -210,7 +210,7 @@ std::vector<Index> leaves_for_face_points(const Grid& grid, int max_level) {
     int points = 0;
     const FaceNeighbours nb = tree.face_neighbours(face.other, face.other_face);
     for (const Index small : nb.leaves) {
-      const Index f = grid.face_index.find(face_code(small, opposite_face(face.other_face)));
+      const Index f = grid.find_face(small, opposite_face(face.other_face));
       const Index r = f == kNoIndex ? kNoIndex : grid.face_result[f];
       points += r != kNoIndex && grid.results[r].contour.kind == FacePointKind::interface_point;
     }
