@@ -80,6 +80,8 @@ nlohmann::json to_json(const QualityReport& r) {
           {"non_positive_cells", r.non_positive_cells},
           {"severely_non_orthogonal_faces", r.severely_non_orthogonal_faces},
           {"highly_skewed_faces", r.highly_skewed_faces},
+          {"non_orthogonality_errors", r.non_orthogonality_errors},
+          {"inverted_face_pyramids", r.inverted_face_pyramids},
           {"min_volume", r.min_volume},
           {"max_neighbour_volume_ratio", r.max_neighbour_volume_ratio},
           {"metrics", metrics}};
@@ -92,7 +94,12 @@ void print_quality(std::ostream& os, const QualityReport& r) {
                      {"inverted hexes", r.inverted_hexes},
                      {"degenerate hexes", r.degenerate_hexes},
                      {"faces non-orthogonal beyond 70 degrees", r.severely_non_orthogonal_faces},
-                     {"faces with skewness above 4", r.highly_skewed_faces}});
+                     {"faces with skewness above 4", r.highly_skewed_faces},
+                     {"faces non-orthogonal at 90 degrees or more (checkMesh fails)",
+                      r.non_orthogonality_errors},
+                     {"inverted face pyramids, a cell centre behind a face (checkMesh's incorrectly "
+                      "oriented faces: fails)",
+                      r.inverted_face_pyramids}});
   os << std::setprecision(6);
   for (const MetricSummary& m : r.metrics) {
     if (m.count == 0) continue;

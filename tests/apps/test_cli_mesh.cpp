@@ -138,6 +138,29 @@ TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   }
 }
 
+// The number after `label` in checkMesh's report, 0 when the line is missing.
+int count_after(const std::string& report, const std::string& label) {
+  const std::size_t at = report.find(label);
+  return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
+}
+
+// `volmesh check` counts the faces that make checkMesh fail as checkMesh does: on
+// builtin:layers6 at level 4, which still has some (issue 4).
+TEST(CliMesh, CheckCountsTheFacesCheckMeshRejects) {
+  const std::string report = check_mesh_report("cutcell builtin:layers6 --level 4", "layers6");
+  // check_mesh_report's case.
+  const fs::path dir = fs::temp_directory_path() / "volmesh-test-mesh-foam-layers6";
+  const auto r = run_volmesh("check " + (dir / "layers6.foam").string() + " --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto quality = nlohmann::json::parse(r.out)["quality"];
+  const int pyramids = quality["inverted_face_pyramids"].get<int>();
+  const int non_orthogonal = quality["non_orthogonality_errors"].get<int>();
+  if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
+  EXPECT_EQ(pyramids, count_after(report, "Error in face pyramids: ")) << report;
+  EXPECT_EQ(non_orthogonal, count_after(report, "Number of non-orthogonality errors: ")) << report;
+  EXPECT_GT(pyramids + non_orthogonal, 0) << "layers6 level 4 passes checkMesh now: pick a case that fails";
+}
+
 // A block with a gable roof whose two planes meet at 20 degrees, below the paper's feature
 // threshold (25.8): by default the ridge is rounded off, with --feature-angle 15 it is kept
 // and the volume comes out to the planar faces' accuracy.

@@ -127,5 +127,17 @@ TEST(FaceMetrics, ReversedNeighbourIsBeyondNinetyDegrees) {
   EXPECT_NEAR(face_non_orthogonality(p, g)[shared], 180.0 - std::atan(0.5) * kDeg, 1e-12);
 }
 
+TEST(FaceMetrics, APyramidIsInvertedWhereACellCentreLiesBehindItsFace) {
+  const Measured right(cube_and_sheared_neighbour());
+  for (const std::uint8_t inverted : face_inverted_pyramids(right.mesh, build_cell_faces(right.mesh), right.geometry))
+    EXPECT_EQ(inverted, 0);
+  // The shared face pointing back at its owner: both centres lie behind it, two pyramids.
+  PolyMesh p = cube_and_sheared_neighbour();
+  const Index shared = right.face_at({1, 0.5, 0.5});
+  std::swap(p.owner[shared], p.neighbour[shared]);
+  const std::vector<std::uint8_t> inverted = face_inverted_pyramids(p, build_cell_faces(p), right.geometry);
+  for (Index f = 0; f < p.num_faces(); ++f) EXPECT_EQ(inverted[f], f == shared ? 2 : 0) << f;
+}
+
 }  // namespace
 }  // namespace volmesh

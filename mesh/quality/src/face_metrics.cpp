@@ -28,6 +28,29 @@ std::vector<double> face_non_orthogonality(const PolyMesh& mesh, const MeshGeome
   return out;
 }
 
+std::vector<std::uint8_t> face_inverted_pyramids(const PolyMesh& mesh, const CellFaces& cell_faces,
+                                                 const MeshGeometry& geometry) {
+  constexpr double kMinPyramidVolume = -1e-15;  // OpenFOAM's -SMALL
+  std::vector<Vec3> centre(mesh.num_cells());
+  tbb::parallel_for(Index{0}, mesh.num_cells(), [&](Index c) {
+    centre[c] = checkmesh_cell_geometry([&](const auto& visit) {
+                  for (const Index f : cell_faces.of(c)) {
+                    const FaceGeometry& face = geometry.faces[f];
+                    visit(mesh.owner[f] == c ? face.area_vector : Vec3(-face.area_vector), face.centre);
+                  }
+                }).centre;
+  });
+  std::vector<std::uint8_t> out(mesh.num_faces());
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
+    const FaceGeometry& face = geometry.faces[f];
+    const double owner = face.area_vector.dot(face.centre - centre[mesh.owner[f]]) / 3.0;
+    const double neighbour =
+        mesh.is_boundary(f) ? 0.0 : face.area_vector.dot(centre[mesh.neighbour[f]] - face.centre) / 3.0;
+    out[f] = (owner < kMinPyramidVolume ? 1 : 0) + (neighbour < kMinPyramidVolume ? 1 : 0);
+  });
+  return out;
+}
+
 std::vector<double> face_skewness(const PolyMesh& mesh, const MeshGeometry& geometry) {
   std::vector<double> out(mesh.num_faces());
   tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {

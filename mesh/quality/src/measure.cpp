@@ -68,7 +68,7 @@ QualityMeasurements measure_quality(const PolyMesh& mesh, const CellFaces& cell_
 
   measure_shapes(mesh, cell_faces, q);
   m.faces = {face_non_orthogonality(mesh, geometry), face_skewness(mesh, geometry),
-             face_volume_ratio(mesh, geometry)};
+             face_volume_ratio(mesh, geometry), face_inverted_pyramids(mesh, cell_faces, geometry)};
   gather_face_values(mesh, m.faces, q);
   return m;
 }

@@ -4,6 +4,7 @@
 // Each function returns one value per face.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "volmesh/core/geometry.hpp"
@@ -18,6 +19,15 @@ namespace volmesh {
 // average and > 70° count over internal faces only; the quality report does the same and
 // keeps the boundary values apart.
 std::vector<double> face_non_orthogonality(const PolyMesh& mesh, const MeshGeometry& geometry);
+
+// Per face, how many of the cell centres on its sides lie behind it (0-2): the pyramid on the
+// face with its apex at that centre has a negative volume (below -1e-15 as
+// primitiveMesh::checkFacePyramids tests it; checkMesh's count of "incorrectly oriented"
+// faces is the sum over the faces). The
+// centres are checkMesh's (checkmesh_cell_geometry), not the exact centroids: a centre
+// that lies on a face's plane to within the difference decides the verdict.
+std::vector<std::uint8_t> face_inverted_pyramids(const PolyMesh& mesh, const CellFaces& cell_faces,
+                                                 const MeshGeometry& geometry);
 
 // Skewness exactly as primitiveMeshTools::faceSkewness (internal faces) and
 // boundaryFaceSkewness (boundary faces, mirrored owner centre) define it: the distance

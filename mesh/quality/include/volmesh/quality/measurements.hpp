@@ -1,6 +1,7 @@
 #pragma once
 // Every quality metric of a PolyMesh, measured in one pass over cells and faces from
 // geometry computed once: the data behind the quality report and the VTU cell arrays.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct CellQuality {
 // One value per face, as face_metrics.hpp defines them.
 struct FaceQuality {
   std::vector<double> non_orthogonality, skewness, volume_ratio;
+  std::vector<std::uint8_t> inverted_pyramids;
 };
 
 struct QualityMeasurements {

@@ -21,6 +21,9 @@ struct QualityReport {
   Index severely_non_orthogonal_faces = 0;  // internal faces above 70° (checkMesh splits
                                             // these into "severe" and "> 90°" errors)
   Index highly_skewed_faces = 0;            // faces above 4, boundary faces included
+  // What makes checkMesh fail, not only warn:
+  Index non_orthogonality_errors = 0;  // internal faces at 90° or more
+  Index inverted_face_pyramids = 0;    // cell centres behind a face, per face and side
   double min_volume = 0.0;                  // NaN without cells
   double max_neighbour_volume_ratio = 0.0;  // NaN without internal faces
   // Always these, in this order (count 0 when no element of that kind exists):
