@@ -95,10 +95,16 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
   EXPECT_NEAR(check_validity(tets).total_volume, 1.0, 1e-12);
 }
 
-// Meshes into an OpenFOAM case and returns checkMesh's report ("" when checkMesh is missing).
+// The OpenFOAM case check_mesh_report writes for `name`.
+fs::path foam_case(const std::string& name) {
+  return fs::temp_directory_path() / ("volmesh-test-mesh-foam-" + name) / (name + ".foam");
+}
+
+// Meshes into an OpenFOAM case (foam_case(name)) and returns checkMesh's report ("" when
+// checkMesh is missing).
 std::string check_mesh_report(const std::string& mesh_args, const std::string& name) {
   const fs::path dir = test::scratch_dir("mesh-foam-" + name);
-  const fs::path out = dir / (name + ".foam");
+  const fs::path out = foam_case(name);
   const auto r = run_volmesh("mesh " + mesh_args + " -o " + out.string() + "/", dir);
   EXPECT_EQ(r.exit_code, 0) << mesh_args << ": " << r.err;
   EXPECT_TRUE(check_validity(read_mesh(out)).valid()) << mesh_args;
@@ -148,9 +154,8 @@ int count_after(const std::string& report, const std::string& label) {
 // builtin:layers6 at level 4, which still has some (issue 4).
 TEST(CliMesh, CheckCountsTheFacesCheckMeshRejects) {
   const std::string report = check_mesh_report("cutcell builtin:layers6 --level 4", "layers6");
-  // check_mesh_report's case.
-  const fs::path dir = fs::temp_directory_path() / "volmesh-test-mesh-foam-layers6";
-  const auto r = run_volmesh("check " + (dir / "layers6.foam").string() + " --json", dir);
+  const fs::path out = foam_case("layers6");
+  const auto r = run_volmesh("check " + out.string() + " --json", out.parent_path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto quality = nlohmann::json::parse(r.out)["quality"];
   const int pyramids = quality["inverted_face_pyramids"].get<int>();

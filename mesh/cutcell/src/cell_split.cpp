@@ -106,7 +106,8 @@ class Splitter {
   std::optional<Vec3> clamp_component(const std::vector<int>& loop, std::span<const Vec3> s,
                                       std::span<const Vec3> n, bool on_boundary, const Vec3& p,
                                       double reach, int max_rank) const;
-  Vec3 onto_surfaces(TangentPlanes& planes, const Vec3& x, int max_rank) const;
+  std::optional<std::pair<Vec3, TangentPlanes>> onto_surfaces(std::span<const Vec3> s, std::span<const Vec3> n,
+                                                              const Vec3& x, int max_rank) const;
   std::optional<Vec3> fitted_cell_point(const EdgeNormals& edges, const Vec3& fit) const;
   int cell_point(const std::vector<int>& face_points, const std::optional<Vec3>& fitted,
                  const EdgeNormals& edges);
@@ -234,28 +235,29 @@ std::optional<Vec3> Splitter::clamp_component(const std::vector<int>& loop, std:
   return r;
 }
 
-// x, where the tangent planes meet, moved by one Newton step onto the surfaces (at most
-// max_rank of them), and `planes` then the new ones; x itself without surface_near, when a
-// surface is not found again, or when the step does not converge: found again beside the
-// new point, a surface lies farther than a quarter of the step from it (the planes found
-// are not those meeting at x; on builtin:primitives at level 3 such steps cost 2e-2 of a
-// region's volume).
-Vec3 Splitter::onto_surfaces(TangentPlanes& planes, const Vec3& x, int max_rank) const {
-  if (!options_.exact_points || !options_.surface_near) return x;
+// x, where the tangent planes through s with normals n meet, moved by one Newton step onto
+// the surfaces (at most max_rank of them), with their new tangent planes; nullopt without
+// surface_near, when a surface is not found again, or when the step does not converge:
+// found again beside the new point, a surface lies farther than a quarter of the step from
+// it (the planes found are not those meeting at x; on builtin:primitives at level 3 such
+// steps cost 2e-2 of a region's volume).
+std::optional<std::pair<Vec3, TangentPlanes>> Splitter::onto_surfaces(std::span<const Vec3> s,
+                                                                       std::span<const Vec3> n,
+                                                                       const Vec3& x, int max_rank) const {
+  if (!options_.exact_points || !options_.surface_near) return std::nullopt;
   const double reach = options_.newton_reach * size_;
-  const std::optional<TangentPlanes> found =
-      planes_near_feature(planes.points, planes.normals, x, reach, 0.4 * reach, options_.surface_near);
-  if (!found) return x;
+  std::optional<TangentPlanes> found = planes_near_feature(s, n, x, reach, 0.4 * reach, options_.surface_near);
+  if (!found) return std::nullopt;
   const Vec3 p = tangent_intersection(found->points, found->normals, x, max_rank);
   const double step = (p - x).norm();
-  if (!(step < reach)) return x;
+  if (!(step < reach)) return std::nullopt;
   const std::optional<TangentPlanes> again =
       planes_near_feature(found->points, found->normals, p, reach, 0.4 * reach, options_.surface_near);
-  if (!again || again->points.size() != found->points.size()) return x;
+  if (!again || again->points.size() != found->points.size()) return std::nullopt;
   for (std::size_t k = 0; k < again->points.size(); ++k)
-    if (!(std::abs(again->normals[k].dot(p - again->points[k])) <= 0.25 * step + 1e-12 * size_)) return x;
-  planes = *found;
-  return p;
+    if (!(std::abs(again->normals[k].dot(p - again->points[k])) <= 0.25 * step + 1e-12 * size_))
+      return std::nullopt;
+  return std::pair{p, std::move(*found)};
 }
 
 // The least-squares junction point of the cell's edge points (those on the domain's boundary
@@ -263,8 +265,8 @@ Vec3 Splitter::onto_surfaces(TangentPlanes& planes, const Vec3& x, int max_rank)
 // lies beyond reach.
 std::optional<Vec3> Splitter::fitted_cell_point(const EdgeNormals& edges, const Vec3& fit) const {
   const double margin = options_.junction_margin * size_, reach = options_.reach * size_;
-  TangentPlanes planes{edges.points, edges.normals};
-  const Vec3 junction = onto_surfaces(planes, fit, 3);
+  const auto stepped = onto_surfaces(edges.points, edges.normals, fit, 3);
+  const Vec3 junction = stepped ? stepped->first : fit;
   std::optional<Vec3> p;
   // On a junction line (a sphere meeting a plane) the point slides along the line into the
   // cell, keeping down to a quarter of the margin where the line passes by a cell edge;
@@ -468,16 +470,16 @@ std::vector<Candidate> Splitter::candidates(const Loop& loop) {
       if (const auto feature = sharp_feature(s, n, options_.feature, fit.level)) {
         if (!feature->corner) split_along_feature(loop.points, on_boundary, out);
         const int rank = feature->corner ? 3 : 2;
-        TangentPlanes planes{s, n};
-        const Vec3 point = onto_surfaces(planes, feature->point, rank);
+        const auto stepped = onto_surfaces(s, n, feature->point, rank);
+        const Vec3 point = stepped ? stepped->first : feature->point;
+        const std::span<const Vec3> ps = stepped ? stepped->second.points : s, pn = stepped ? stepped->second.normals : n;
         // Where the feature runs along a cell face, the face's own point on it (CMS feature
         // point or interface point) is the fan centre: a point beside it would make slivers.
         // Not a box's corner, which the face's point on one of its edges would cut off.
         const bool box_corner = feature->corner && on_boundary && on_octree_planes(s, n, point);
         if (const int on_face = box_corner ? -1 : face_point_near(loop, point); on_face >= 0)
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, on_face)});
-        else if (const auto p = clamp_component(loop.points, planes.points, planes.normals, on_boundary,
-                                                point, options_.feature_reach, rank))
+        else if (const auto p = clamp_component(loop.points, ps, pn, on_boundary, point, options_.feature_reach, rank))
           out.push_back({LoopMethod::feature_fan, triangulate_fan(loop.points, fan_centre(loop.points, *p))});
         if (!out.empty()) return out;
       }

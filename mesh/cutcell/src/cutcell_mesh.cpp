@@ -61,7 +61,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
       std::optional<std::pair<Vec3, Vec3>> best;
       double nearest = 1.0;
       for (const Crossing& c : domain.crossings(x - d, x + d))
-        if (c.before != c.after && c.normal.dot(d) > 0.9 * d.norm() && std::abs(c.t - 0.5) < nearest) {
+        if (c.before != c.after && c.normal.dot(d) > kSameSurfaceCosine * d.norm() && std::abs(c.t - 0.5) < nearest) {
           nearest = std::abs(c.t - 0.5);
           best = {c.point, c.normal};
         }

@@ -215,7 +215,7 @@ Vec3 Contourer::onto_feature(int p, int q, Vec3 x) const {
     const Vec3 along = own - own.dot(other) * other;
     if (!(along.norm() > 0.5)) return x;
     const auto found = options_.surface_near(x + side * 0.4 * reach * other, reach * along.normalized());
-    if (!found || !(found->second.dot(own) > 0.9)) return x;
+    if (!found || !(found->second.dot(own) > kSameSurfaceCosine)) return x;
     s[k] = found->first;
     n[k] = found->second;
   }

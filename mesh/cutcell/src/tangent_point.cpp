@@ -129,11 +129,10 @@ std::optional<Feature> sharp_feature(std::span<const Vec3> points, std::span<con
 std::optional<TangentPlanes> planes_near_feature(std::span<const Vec3> s, std::span<const Vec3> n,
                                                  const Vec3& x, double reach, double shift,
                                                  const SurfaceNear& near) {
-  constexpr double kSameSurface = 0.9;  // the cosine of 25 degrees, as surface_near's
   std::vector<std::vector<std::size_t>> surfaces;
   for (std::size_t i = 0; i < n.size(); ++i) {
     const auto same = std::find_if(surfaces.begin(), surfaces.end(),
-                                   [&](const auto& g) { return n[g[0]].dot(n[i]) > kSameSurface; });
+                                   [&](const auto& g) { return n[g[0]].dot(n[i]) > kSameSurfaceCosine; });
     if (same == surfaces.end()) surfaces.push_back({i});
     else same->push_back(i);
   }
@@ -151,7 +150,7 @@ std::optional<TangentPlanes> planes_near_feature(std::span<const Vec3> s, std::s
     if (along.norm() > 1e-9 * reach) along = shift * along.normalized();
     else along = Vec3::Zero();
     const auto found = near(x + along, reach * m);
-    if (!found || !(found->second.dot(m) > kSameSurface)) return std::nullopt;
+    if (!found || !(found->second.dot(m) > kSameSurfaceCosine)) return std::nullopt;
     out.points.push_back(found->first);
     out.normals.push_back(found->second);
   }

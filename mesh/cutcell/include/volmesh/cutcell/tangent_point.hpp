@@ -39,6 +39,9 @@ Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const V
 // tangent planes of two or more surfaces meet.
 std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff = 0.1);
 
+// Normals within 25 degrees of each other (cosine above this) belong to one surface.
+inline constexpr double kSameSurfaceCosine = 0.9;
+
 // The interface found again near x: the crossing nearest x of the segment x -+ d whose
 // normal lies within 25 degrees of d, with that normal; nullopt if none.
 using SurfaceNear = std::function<std::optional<std::pair<Vec3, Vec3>>(const Vec3& x, const Vec3& d)>;
