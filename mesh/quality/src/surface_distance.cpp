@@ -1,39 +1,274 @@
 #include "volmesh/quality/surface_distance.hpp"
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <vector>
 
 namespace volmesh {
 
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Triangle = Kernel::Triangle_3;
+using Triangles = std::vector<Triangle>;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-// A triangle soup as a Surface_mesh: the distance algorithm only needs faces, not a
-// manifold connectivity, so every triangle gets its own three vertices.
-Mesh to_cgal(const TriSurface& s) {
-  Mesh m;
-  m.reserve(3 * s.triangles.size(), 3 * s.triangles.size(), s.triangles.size());
-  for (const auto& t : s.triangles) {
-    std::array<Mesh::Vertex_index, 3> v;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = s.points[t[k]];
-      v[k] = m.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Closest {
+  double distance = 0.0;
+  std::size_t triangle = 0;
+};
+
+using Point2 = std::array<double, 2>;
+using Polygon2 = std::vector<Point2>;
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double area2(const Polygon2& p) {
+  double a = 0.0;
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) a += cross2(p[0], p[i], p[i + 1]);
+  return 0.5 * a;
+}
+
+// The part of a convex polygon inside a counter-clockwise triangle (Sutherland–Hodgman).
+Polygon2 clip(Polygon2 poly, const std::array<Point2, 3>& tri) {
+  for (int e = 0; e < 3 && !poly.empty(); ++e) {
+    const Point2& a = tri[e];
+    const Point2& b = tri[(e + 1) % 3];
+    Polygon2 out;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Point2& p = poly[i];
+      const Point2& q = poly[(i + 1) % poly.size()];
+      const double sp = cross2(a, b, p), sq = cross2(a, b, q);
+      if (sp >= 0.0) out.push_back(p);
+      if ((sp >= 0.0) != (sq >= 0.0)) {
+        const double t = sp / (sp - sq);
+        out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+      }
     }
-    m.add_face(v[0], v[1], v[2]);
+    poly = std::move(out);
   }
-  return m;
+  return poly;
+}
+
+// The surface distances are measured to: its triangles in an AABB tree, for closest points
+// and for the triangles near a piece.
+class Target {
+ public:
+  explicit Target(const TriSurface& s) {
+    triangles_.reserve(s.triangles.size());
+    for (const auto& t : s.triangles) triangles_.emplace_back(point(s.points[t[0]]), point(s.points[t[1]]), point(s.points[t[2]]));
+    tree_.insert(triangles_.cbegin(), triangles_.cend());
+    tree_.accelerate_distance_queries();
+  }
+  Target(const Target&) = delete;
+  Target& operator=(const Target&) = delete;
+
+  static Point point(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+  Closest closest(const Point& p) const {
+    const auto [q, it] = tree_.closest_point_and_primitive(p);
+    return {std::sqrt(CGAL::squared_distance(p, q)), static_cast<std::size_t>(it - triangles_.cbegin())};
+  }
+
+  double distance(std::size_t triangle, const Point& p) const {
+    return std::sqrt(CGAL::squared_distance(p, triangles_[triangle]));
+  }
+
+  // Whether every corner of the other triangles lies within `tolerance` of the plane of `triangle`.
+  bool coplanar(std::size_t triangle, const std::array<std::size_t, 3>& others, double tolerance) const {
+    const Triangle& t = triangles_[triangle];
+    if (t.is_degenerate()) return false;
+    const Kernel::Plane_3 plane = t.supporting_plane();
+    const double scale = std::sqrt(plane.orthogonal_vector().squared_length());
+    for (std::size_t o : others)
+      for (int k = 0; k < 3; ++k)
+        if (std::abs(CGAL::to_double(plane.a() * triangles_[o][k].x() + plane.b() * triangles_[o][k].y() +
+                                     plane.c() * triangles_[o][k].z() + plane.d())) > tolerance * scale)
+          return false;
+    return true;
+  }
+
+  // An upper bound on the distance from every point of `piece` to the surface when the
+  // surface's triangles in the plane of `triangle` (within `tolerance`) cover the piece's
+  // projection onto that plane: the distance to the plane then bounds it, and is largest at a
+  // corner. +inf when they do not cover it, or when the piece stands steeply on the plane.
+  double covered_plane_bound(const std::array<Point, 3>& piece, std::size_t triangle, double reach,
+                             double tolerance) const {
+    const Triangle& t = triangles_[triangle];
+    Vector n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    n = n / std::sqrt(n.squared_length());
+    const Vector piece_normal = CGAL::cross_product(piece[1] - piece[0], piece[2] - piece[0]);
+    const double piece_norm = std::sqrt(piece_normal.squared_length());
+    if (!(std::abs(piece_normal * n) >= 0.5 * piece_norm)) return kInfinity;
+    Vector u = t[1] - t[0];
+    u = u / std::sqrt(u.squared_length());
+    const Vector w = CGAL::cross_product(n, u);
+    const auto in_plane = [&](const Point& p) -> Point2 { return {(p - t[0]) * u, (p - t[0]) * w}; };
+    const auto height = [&](const Point& p) { return std::abs((p - t[0]) * n); };
+
+    Polygon2 projected{in_plane(piece[0]), in_plane(piece[1]), in_plane(piece[2])};
+    if (area2(projected) < 0.0) std::swap(projected[1], projected[2]);
+    const double projected_area = area2(projected);
+
+    CGAL::Bbox_3 box = piece[0].bbox() + piece[1].bbox() + piece[2].bbox();
+    box = CGAL::Bbox_3(box.xmin() - reach, box.ymin() - reach, box.zmin() - reach, box.xmax() + reach,
+                       box.ymax() + reach, box.zmax() + reach);
+    std::vector<Triangles::const_iterator> near;
+    tree_.all_intersected_primitives(box, std::back_inserter(near));
+    double covered = 0.0;
+    for (const auto it : near) {
+      const Triangle& s = *it;
+      if (height(s[0]) > tolerance || height(s[1]) > tolerance || height(s[2]) > tolerance) continue;
+      std::array<Point2, 3> flat{in_plane(s[0]), in_plane(s[1]), in_plane(s[2])};
+      const double a = cross2(flat[0], flat[1], flat[2]);
+      if (a == 0.0) continue;
+      if (a < 0.0) std::swap(flat[1], flat[2]);
+      covered += area2(clip(projected, flat));
+    }
+    // A closed surface's triangles do not overlap, so the areas add up to the projection's
+    // exactly where they cover it; more than that means overlapping triangles: no verdict.
+    if (std::abs(covered - projected_area) > 1e-11 * projected_area) return kInfinity;
+    return std::max({height(piece[0]), height(piece[1]), height(piece[2])}) + tolerance;
+  }
+
+ private:
+  Triangles triangles_;
+  Tree tree_;
+};
+
+// A triangle of the measured surface, or a part of one, with what its corners see.
+struct Piece {
+  std::array<Point, 3> corner;
+  std::array<Closest, 3> closest;
+  double upper = kInfinity;  // bound on the distance of any of its points to the target
+  bool tried_plane = false;
+  bool operator<(const Piece& other) const { return upper < other.upper; }
+};
+
+// Every point of the piece is within the largest corner distance to any one triangle: the
+// distance to a triangle is convex. The triangles tried are those the corners are closest to.
+double corner_bound(const Target& target, const Piece& p) {
+  double best = kInfinity;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t t = p.closest[k].triangle;
+    if ((k > 0 && t == p.closest[0].triangle) || (k > 1 && t == p.closest[1].triangle)) continue;
+    double worst = p.closest[k].distance;
+    for (int i = 0; i < 3; ++i)
+      if (i != k) worst = std::max(worst, target.distance(t, p.corner[i]));
+    best = std::min(best, worst);
+  }
+  return best;
+}
+
+// Where the corners are closest to coplanar triangles that together cover the piece, the
+// piece is as far as its farthest corner. This is what makes surfaces lying on each other
+// cheap: a piece straddling two of the target's coplanar triangles is otherwise only bounded
+// by subdividing it down to the error bound along their common edge.
+double plane_bound(const Target& target, const Piece& p, double tolerance) {
+  const std::array<std::size_t, 3> tri{p.closest[0].triangle, p.closest[1].triangle, p.closest[2].triangle};
+  const double reach =
+      std::max({p.closest[0].distance, p.closest[1].distance, p.closest[2].distance}) + tolerance;
+  for (int k = 0; k < 3; ++k) {
+    if ((k > 0 && tri[k] == tri[0]) || (k > 1 && tri[k] == tri[1])) continue;
+    if (!target.coplanar(tri[k], tri, tolerance)) continue;
+    const double bound = target.covered_plane_bound(p.corner, tri[k], reach, tolerance);
+    if (bound < kInfinity) return bound;
+  }
+  return kInfinity;
+}
+
+struct Bounds {
+  double lower = 0.0, upper = 0.0;
+};
+
+// max over points of `from` of the distance to `to`, bracketed within `error_bound`: the
+// corner distances give the lower bound, and pieces whose upper bound exceeds it by more than
+// the error bound are subdivided, farthest first (Tang et al.'s scheme, as CGAL's
+// bounded-error Hausdorff distance, with the coplanar cover bound added).
+Bounds one_sided(const TriSurface& from, const Target& to, double error_bound) {
+  // Only the triangles' corners: a mesh boundary keeps the interior points in its list.
+  std::vector<Closest> at_point(from.points.size());
+  std::vector<char> seen(from.points.size(), 0);
+  Bounds b;
+  for (const auto& t : from.triangles)
+    for (const Index i : t)
+      if (!seen[i]) {
+        seen[i] = 1;
+        at_point[i] = to.closest(Target::point(from.points[i]));
+        b.lower = std::max(b.lower, at_point[i].distance);
+      }
+  const double tolerance = 1e-3 * error_bound;
+  std::priority_queue<Piece> queue;
+  double settled = 0.0;  // largest upper bound of the pieces set aside
+  const auto consider = [&](Piece&& p) {
+    p.upper = corner_bound(to, p);
+    if (p.upper <= b.lower + error_bound)
+      settled = std::max(settled, p.upper);
+    else
+      queue.push(std::move(p));
+  };
+  for (const auto& t : from.triangles) {
+    Piece p;
+    for (int k = 0; k < 3; ++k) {
+      p.corner[k] = Target::point(from.points[t[k]]);
+      p.closest[k] = at_point[t[k]];
+    }
+    consider(std::move(p));
+  }
+  while (!queue.empty() && queue.top().upper > b.lower + error_bound) {
+    Piece p = queue.top();
+    queue.pop();
+    if (!p.tried_plane) {
+      p.tried_plane = true;
+      p.upper = std::min(p.upper, plane_bound(to, p, tolerance));
+      if (p.upper <= b.lower + error_bound) {
+        settled = std::max(settled, p.upper);
+        continue;
+      }
+    }
+    const double size = std::max({CGAL::squared_distance(p.corner[0], p.corner[1]),
+                                  CGAL::squared_distance(p.corner[1], p.corner[2]),
+                                  CGAL::squared_distance(p.corner[2], p.corner[0])});
+    // A piece smaller than the bound is within it of its corners: nothing left to split.
+    if (std::sqrt(size) <= error_bound) {
+      settled = std::max(settled, std::min(p.upper, p.closest[0].distance + std::sqrt(size)));
+      continue;
+    }
+    std::array<Point, 3> mid;
+    std::array<Closest, 3> mid_closest;
+    for (int k = 0; k < 3; ++k) {
+      mid[k] = CGAL::midpoint(p.corner[k], p.corner[(k + 1) % 3]);
+      mid_closest[k] = to.closest(mid[k]);
+      b.lower = std::max(b.lower, mid_closest[k].distance);
+    }
+    for (int k = 0; k < 3; ++k)
+      consider({{p.corner[k], mid[k], mid[(k + 2) % 3]}, {p.closest[k], mid_closest[k], mid_closest[(k + 2) % 3]}});
+    consider({mid, mid_closest});
+  }
+  b.upper = std::max({b.lower, settled, queue.empty() ? 0.0 : queue.top().upper});
+  return b;
 }
 
 }  // namespace
 
 HausdorffDistance hausdorff_distance(const TriSurface& a, const TriSurface& b, double error_bound) {
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  const Mesh ma = to_cgal(a), mb = to_cgal(b);
-  return {PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(ma, mb, error_bound),
-          PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(mb, ma, error_bound)};
+  const Target ta(a), tb(b);
+  return {one_sided(a, tb, error_bound).lower, one_sided(b, ta, error_bound).lower};
 }
 
 }  // namespace volmesh
