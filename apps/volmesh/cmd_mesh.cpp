@@ -40,6 +40,7 @@ struct MeshOptions {
   std::string interface_points = "exact";
   int level = 5;
   int base_level = OctreeOptions{}.base_level;
+  int cells_between_levels = OctreeOptions{}.cells_between_levels;
   double feature_angle = 0.0;  // degrees; 0: the paper's threshold
   bool tets = false, json = false;
   int threads = 0;
@@ -86,6 +87,7 @@ OctreeOptions octree_options(const MeshOptions& opt) {
   OctreeOptions o;
   o.level = opt.level;
   o.base_level = opt.base_level;
+  o.cells_between_levels = opt.cells_between_levels;
   return o;
 }
 
@@ -168,6 +170,10 @@ int run_mesh(const MeshOptions& opt) {
     std::cerr << "volmesh mesh: --interface-points applies to the cutcell method only\n";
     return 2;
   }
+  if (opt.cells_between_levels != 1 && opt.method == "grid") {
+    std::cerr << "volmesh mesh: --cells-between-levels applies to the octree methods only\n";
+    return 2;
+  }
   if (opt.feature_angle > 0.0 && opt.method != "cutcell") {
     std::cerr << "volmesh mesh: --feature-angle applies to the cutcell method only\n";
     return 2;
@@ -200,6 +206,7 @@ int run_mesh(const MeshOptions& opt) {
                      {"output", opt.output},
                      {"level", opt.level},
                      {"base_level", opt.base_level},
+                     {"cells_between_levels", opt.cells_between_levels},
                      {"time_seconds", mesh_seconds},
                      {"total_seconds", seconds_since(start)},
                      {"cells", mesh.num_cells()},
@@ -241,6 +248,11 @@ Command add_mesh_command(CLI::App& root) {
                   "octree: uniform depth everywhere before refining toward the interfaces")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  app->add_option("--cells-between-levels", opt->cells_between_levels,
+                  "octree: cells of each level across before the next coarser one begins "
+                  "(snappyHexMesh's nCellsBetweenLevels; 1: 2:1 balance only)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   app->add_flag("--tets", opt->tets, "grid: split each hex into 6 Kuhn tetrahedra");
   app->add_option("--interface-points", opt->interface_points,
                   "cutcell: exact crossings (default) or edge midpoints (M3C as published)")

@@ -200,6 +200,27 @@ TEST(CliMesh, FeatureAngleKeepsAShallowRidge) {
   EXPECT_NEAR(angle, 15.0, 1e-9);
 }
 
+// The buffer cells are whole octree leaves away from the interfaces: the cut cells and so
+// the regions' volumes stay as they were.
+TEST(CliMesh, CellsBetweenLevelsAddsUncutCellsOnly) {
+  const fs::path dir = test::scratch_dir("mesh-grading");
+  const auto mesh = [&](const std::string& extra) {
+    const auto r = run_volmesh("mesh cutcell builtin:primitives --level 5 --json -o " +
+                                   (dir / "p.vtu").string() + extra, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto balanced = mesh(""), graded = mesh(" --cells-between-levels 2");
+  EXPECT_EQ(balanced["cells_between_levels"], 1);
+  EXPECT_EQ(graded["cells_between_levels"], 2);
+  EXPECT_GT(graded["cells"].get<int>(), balanced["cells"].get<int>() + 1000);
+  EXPECT_EQ(graded["cut_cells"], balanced["cut_cells"]);
+  EXPECT_TRUE(graded["validity"]["valid"].get<bool>());
+  for (const auto& [region, r] : balanced["regions"].items())
+    EXPECT_NEAR(graded["regions"][region]["volume"].get<double>(), r["volume"].get<double>(), 1e-12)
+        << "region " << region;
+}
+
 TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
   const fs::path dir = test::scratch_dir("mesh-bad");
   const fs::path out = dir / "out.vtu";
@@ -237,7 +258,9 @@ TEST(CliMesh, BadUsageExitsWith2) {
         "mesh staircase builtin:ball -o x.vtu --threads 0",
         "mesh staircase builtin:ball -o x.vtu --base-level -1",
         "mesh staircase builtin:ball -o x.vtu --feature-angle 20",
-        "mesh cutcell builtin:ball -o x.vtu --feature-angle 0"}) {
+        "mesh cutcell builtin:ball -o x.vtu --feature-angle 0",
+        "mesh cutcell builtin:ball -o x.vtu --cells-between-levels 0",
+        "mesh grid builtin:ball -o x.vtu --cells-between-levels 2"}) {
     const auto r = run_volmesh(args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }

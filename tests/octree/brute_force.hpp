@@ -49,4 +49,45 @@ inline Octree random_tree(unsigned seed, int rounds, double p, int max_level) {
   return tree;
 }
 
+// Balance check for trees too large for the pairwise test: every leaf adjacent to a face
+// (or an edge) of a leaf of level l contains one of the points sampled on the level-(l+2)
+// grid just across it, so the levels found there bound the neighbours' levels.
+inline int sampled_balance_violations(const Octree& tree) {
+  int violations = 0;
+  for (Index i = 0; i < tree.num_leaves(); ++i) {
+    const OctreeLeaf& c = tree.leaf(i);
+    const std::int64_t s = c.size(), q = std::max<std::int64_t>(1, s / 4);
+    auto check = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      if (x < 0 || y < 0 || z < 0 || x >= kOctreeGrid || y >= kOctreeGrid || z >= kOctreeGrid)
+        return;
+      const Index d = tree.leaf_containing({static_cast<std::uint32_t>(x),
+                                            static_cast<std::uint32_t>(y),
+                                            static_cast<std::uint32_t>(z)});
+      violations += std::abs(tree.leaf(d).level - c.level) > 1;
+    };
+    for (int a = 0; a < 3; ++a) {
+      const int u = (a + 1) % 3, v = (a + 2) % 3;
+      for (const std::int64_t side : {std::int64_t{-1}, s})  // faces
+        for (std::int64_t du = 0; du < s; du += q)
+          for (std::int64_t dv = 0; dv < s; dv += q) {
+            std::array<std::int64_t, 3> p{c.anchor[0], c.anchor[1], c.anchor[2]};
+            p[a] += side;
+            p[u] += du;
+            p[v] += dv;
+            check(p[0], p[1], p[2]);
+          }
+      for (const std::int64_t su : {std::int64_t{-1}, s})  // edges along a
+        for (const std::int64_t sv : {std::int64_t{-1}, s})
+          for (std::int64_t da = 0; da < s; da += q) {
+            std::array<std::int64_t, 3> p{c.anchor[0], c.anchor[1], c.anchor[2]};
+            p[a] += da;
+            p[u] += su;
+            p[v] += sv;
+            check(p[0], p[1], p[2]);
+          }
+    }
+  }
+  return violations;
+}
+
 }  // namespace volmesh::test

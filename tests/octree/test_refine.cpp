@@ -9,47 +9,6 @@
 namespace volmesh {
 namespace {
 
-// Balance check for trees too large for the pairwise test: every leaf adjacent to a face
-// (or an edge) of a leaf of level l contains one of the points sampled on the level-(l+2)
-// grid just across it, so the levels found there bound the neighbours' levels.
-int sampled_balance_violations(const Octree& tree) {
-  int violations = 0;
-  for (Index i = 0; i < tree.num_leaves(); ++i) {
-    const OctreeLeaf& c = tree.leaf(i);
-    const std::int64_t s = c.size(), q = std::max<std::int64_t>(1, s / 4);
-    auto check = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
-      if (x < 0 || y < 0 || z < 0 || x >= kOctreeGrid || y >= kOctreeGrid || z >= kOctreeGrid)
-        return;
-      const Index d = tree.leaf_containing({static_cast<std::uint32_t>(x),
-                                            static_cast<std::uint32_t>(y),
-                                            static_cast<std::uint32_t>(z)});
-      violations += std::abs(tree.leaf(d).level - c.level) > 1;
-    };
-    for (int a = 0; a < 3; ++a) {
-      const int u = (a + 1) % 3, v = (a + 2) % 3;
-      for (const std::int64_t side : {std::int64_t{-1}, s})  // faces
-        for (std::int64_t du = 0; du < s; du += q)
-          for (std::int64_t dv = 0; dv < s; dv += q) {
-            std::array<std::int64_t, 3> p{c.anchor[0], c.anchor[1], c.anchor[2]};
-            p[a] += side;
-            p[u] += du;
-            p[v] += dv;
-            check(p[0], p[1], p[2]);
-          }
-      for (const std::int64_t su : {std::int64_t{-1}, s})  // edges along a
-        for (const std::int64_t sv : {std::int64_t{-1}, s})
-          for (std::int64_t da = 0; da < s; da += q) {
-            std::array<std::int64_t, 3> p{c.anchor[0], c.anchor[1], c.anchor[2]};
-            p[a] += da;
-            p[u] += su;
-            p[v] += sv;
-            check(p[0], p[1], p[2]);
-          }
-    }
-  }
-  return violations;
-}
-
 TEST(Balance, RandomTreesBecomeBalancedByRefinementOnly) {
   for (unsigned seed = 10; seed < 13; ++seed) {
     const Octree original = test::random_tree(seed, 5, 0.25, 7);
@@ -57,7 +16,7 @@ TEST(Balance, RandomTreesBecomeBalancedByRefinementOnly) {
     ASSERT_GT(test::unbalanced_pairs(original), 0) << "seed " << seed;
     balance(tree);
     EXPECT_EQ(test::unbalanced_pairs(tree), 0) << "seed " << seed;
-    EXPECT_EQ(sampled_balance_violations(tree), 0);
+    EXPECT_EQ(test::sampled_balance_violations(tree), 0);
     // Only refines: each new leaf lies inside an original leaf of at most its level.
     for (const OctreeLeaf& l : tree.leaves())
       EXPECT_LE(original.leaf(original.leaf_containing(l.anchor)).level, l.level);
@@ -101,7 +60,7 @@ TEST(Refine, PredicateFixpointReachesTheMaximumLevelAndStaysBalanced) {
                     static_cast<std::uint32_t>(0.85 * kOctreeGrid),
                     static_cast<std::uint32_t>(0.45 * kOctreeGrid)};
   EXPECT_EQ(tree.leaf(tree.leaf_containing(p)).level, 8);
-  EXPECT_EQ(sampled_balance_violations(tree), 0);
+  EXPECT_EQ(test::sampled_balance_violations(tree), 0);
   EXPECT_EQ(tree.max_leaf_level(), 8);
 }
 
@@ -127,7 +86,7 @@ TEST(Refine, InterfaceLeavesReachTheLevelAndNoCoarserLeafIsCut) {
   options.level = 5;
   const Octree tree = build_octree(*domain, options);
   EXPECT_EQ(tree.max_leaf_level(), 5);
-  EXPECT_EQ(sampled_balance_violations(tree), 0);
+  EXPECT_EQ(test::sampled_balance_violations(tree), 0);
   int cut = 0;
   for (const OctreeLeaf& l : tree.leaves()) {
     bool differs = false, crossed = false;
@@ -168,7 +127,7 @@ TEST(Refine, BoxFrontRefinesItsRegion) {
   const Index centre = tree.leaf_containing({kOctreeGrid / 2, kOctreeGrid / 2, kOctreeGrid / 2});
   EXPECT_EQ(tree.leaf(centre).level, 6);
   EXPECT_EQ(tree.max_leaf_level(), 6);
-  EXPECT_EQ(sampled_balance_violations(tree), 0);
+  EXPECT_EQ(test::sampled_balance_violations(tree), 0);
 }
 
 TEST(Refine, SurfaceFrontRefinesTowardItsInterfaces) {

@@ -59,7 +59,7 @@ def tables(out, specs):
         case, levels = spec.split(":")
         title, paper_rows = PAPER[case]
         print(f"### {title}\n")
-        print("| paper level | `--level` / `--base-level` | time s (paper) | time s | speed-up | CPU s "
+        print("| paper level | `--level` / `--base-level` / `--cells-between-levels` | time s (paper) | time s | speed-up | CPU s "
               "| speed-up (CPU) | cells (paper) | cells | ratio | cut cells (paper) | cut cells "
               "| faces (paper) | faces | vertices (paper) | vertices | octree s | cut s | total s "
               "| max leaf level |")
@@ -71,7 +71,7 @@ def tables(out, specs):
             uncut.append((run["cells"] - run["cut_cells"], paper[2] - paper[3]))
             cpu = cpu_seconds(f"{name}.time")
             p_level, p_time, p_cells, p_cut, p_faces, p_vertices = paper
-            print(f"| {p_level} | {run['level']} / {run['base_level']} | {p_time:.2f} | {run['time_seconds']:.2f} "
+            print(f"| {p_level} | {run['level']} / {run['base_level']} / {run['cells_between_levels']} | {p_time:.2f} | {run['time_seconds']:.2f} "
                   f"| {speedup(p_time, run['time_seconds'])} | {cpu:.2f} | {speedup(p_time, cpu)} "
                   f"| {p_cells:,} | {run['cells']:,} | {count_ratio(run['cells'], p_cells)} "
                   f"| {p_cut:,} | {run['cut_cells']:,} | {p_faces:,} | {run['faces']:,} "

@@ -227,6 +227,7 @@ Octree build_octree(const Domain& domain, const OctreeOptions& options) {
         f.level);
   }
   for (const SurfaceFront& f : options.surfaces) refine_toward(tree, *f.surface, f.level);
+  grade(tree, options.cells_between_levels);
   return tree;
 }
 

@@ -175,6 +175,13 @@ int refine(Octree& tree, const LeafPredicate& select, int max_level);
 // crossing queries are batched on both cores.
 void refine_toward(Octree& tree, const Domain& domain, int level);
 
+// Buffer layers between levels (snappyHexMesh's nCellsBetweenLevels): from the finest level
+// down, the leaves within cells_between_levels - 1 cells of level l of a leaf of level l or
+// finer are refined to level l, then the tree is rebalanced, so that each level spans at least
+// that many of its cells before the next coarser one. 1: the 2:1 balance alone (no change).
+// Throws InputError below 1. The tree must be balanced on entry.
+void grade(Octree& tree, int cells_between_levels);
+
 // Extra refinement fronts with their own depth.
 struct BoxFront {
   Box3 box;   // leaves overlapping the box (with positive volume) are refined to `level`
@@ -189,6 +196,7 @@ struct OctreeOptions {
   int level = 4;         // depth at the domain's boundaries and interfaces
   int base_level = 3;    // uniform depth (capped at `level`) before the interface criterion
                          // starts, so that features between coarse grid edges are seen
+  int cells_between_levels = 1;  // grade(): cells of each level before the next coarser one
   // Root = the bounding box's largest side * (1 + 2 margin), centred on the box. Unset: 0.05,
   // except for a domain that fills its bounding box, whose root then starts at the box's
   // lower corner with the box's largest side: its box faces are the root's (all of them
