@@ -192,35 +192,27 @@ double plane_bound(const Target& target, const Piece& p, double tolerance) {
   return kInfinity;
 }
 
-struct Bounds {
-  double lower = 0.0, upper = 0.0;
-};
-
-// max over points of `from` of the distance to `to`, bracketed within `error_bound`: the
-// corner distances give the lower bound, and pieces whose upper bound exceeds it by more than
+// max over points of `from` of the distance to `to`, at most `error_bound` below it: the
+// largest distance found at a corner, where pieces whose upper bound exceeds it by more than
 // the error bound are subdivided, farthest first (Tang et al.'s scheme, as CGAL's
 // bounded-error Hausdorff distance, with the coplanar cover bound added).
-Bounds one_sided(const TriSurface& from, const Target& to, double error_bound) {
+double one_sided(const TriSurface& from, const Target& to, double error_bound) {
   // Only the triangles' corners: a mesh boundary keeps the interior points in its list.
   std::vector<Closest> at_point(from.points.size());
   std::vector<char> seen(from.points.size(), 0);
-  Bounds b;
+  double lower = 0.0;
   for (const auto& t : from.triangles)
     for (const Index i : t)
       if (!seen[i]) {
         seen[i] = 1;
         at_point[i] = to.closest(Target::point(from.points[i]));
-        b.lower = std::max(b.lower, at_point[i].distance);
+        lower = std::max(lower, at_point[i].distance);
       }
   const double tolerance = 1e-3 * error_bound;
   std::priority_queue<Piece> queue;
-  double settled = 0.0;  // largest upper bound of the pieces set aside
   const auto consider = [&](Piece&& p) {
     p.upper = corner_bound(to, p);
-    if (p.upper <= b.lower + error_bound)
-      settled = std::max(settled, p.upper);
-    else
-      queue.push(std::move(p));
+    if (p.upper > lower + error_bound) queue.push(std::move(p));
   };
   for (const auto& t : from.triangles) {
     Piece p;
@@ -230,45 +222,37 @@ Bounds one_sided(const TriSurface& from, const Target& to, double error_bound) {
     }
     consider(std::move(p));
   }
-  while (!queue.empty() && queue.top().upper > b.lower + error_bound) {
+  while (!queue.empty() && queue.top().upper > lower + error_bound) {
     Piece p = queue.top();
     queue.pop();
     if (!p.tried_plane) {
       p.tried_plane = true;
-      p.upper = std::min(p.upper, plane_bound(to, p, tolerance));
-      if (p.upper <= b.lower + error_bound) {
-        settled = std::max(settled, p.upper);
-        continue;
-      }
+      if (plane_bound(to, p, tolerance) <= lower + error_bound) continue;
     }
     const double size = std::max({CGAL::squared_distance(p.corner[0], p.corner[1]),
                                   CGAL::squared_distance(p.corner[1], p.corner[2]),
                                   CGAL::squared_distance(p.corner[2], p.corner[0])});
     // A piece smaller than the bound is within it of its corners: nothing left to split.
-    if (std::sqrt(size) <= error_bound) {
-      settled = std::max(settled, std::min(p.upper, p.closest[0].distance + std::sqrt(size)));
-      continue;
-    }
+    if (std::sqrt(size) <= error_bound) continue;
     std::array<Point, 3> mid;
     std::array<Closest, 3> mid_closest;
     for (int k = 0; k < 3; ++k) {
       mid[k] = CGAL::midpoint(p.corner[k], p.corner[(k + 1) % 3]);
       mid_closest[k] = to.closest(mid[k]);
-      b.lower = std::max(b.lower, mid_closest[k].distance);
+      lower = std::max(lower, mid_closest[k].distance);
     }
     for (int k = 0; k < 3; ++k)
       consider({{p.corner[k], mid[k], mid[(k + 2) % 3]}, {p.closest[k], mid_closest[k], mid_closest[(k + 2) % 3]}});
     consider({mid, mid_closest});
   }
-  b.upper = std::max({b.lower, settled, queue.empty() ? 0.0 : queue.top().upper});
-  return b;
+  return lower;
 }
 
 }  // namespace
 
 HausdorffDistance hausdorff_distance(const TriSurface& a, const TriSurface& b, double error_bound) {
   const Target ta(a), tb(b);
-  return {one_sided(a, tb, error_bound).lower, one_sided(b, ta, error_bound).lower};
+  return {one_sided(a, tb, error_bound), one_sided(b, ta, error_bound)};
 }
 
 }  // namespace volmesh
