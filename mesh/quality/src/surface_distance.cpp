@@ -208,7 +208,10 @@ double one_sided(const TriSurface& from, const Target& to, double error_bound) {
         at_point[i] = to.closest(Target::point(from.points[i]));
         lower = std::max(lower, at_point[i].distance);
       }
-  const double tolerance = 1e-3 * error_bound;
+  // Triangles within a quarter of the bound of one plane count as coplanar: a piece over them
+  // is then settled within half the bound of its corners, also where the surfaces lie on each
+  // other only up to rounding.
+  const double tolerance = 0.25 * error_bound;
   std::priority_queue<Piece> queue;
   const auto consider = [&](Piece&& p) {
     p.upper = corner_bound(to, p);
