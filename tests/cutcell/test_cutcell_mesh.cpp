@@ -138,4 +138,40 @@ TEST(CutcellMesh, LShapeSplitsItsPiecesAtTheInnerEdge) {
 }
 
 }  // namespace
+// A block with a 60° ridge along x, narrower than a level-4 cell and lower than one, placed
+// between the grid lines (margin 0: the root is the unit cube from z = -0.265): no cell edge
+// crosses the ridge, whose cells see only the block's top, and their fans cut it off (volume
+// error -7.8e-4; the ridge is 1.2e-3 of the volume). A crossing through their centre facing
+// elsewhere than their edge points splits them, and the ridge is kept (3.8e-4; 7.6e-5 at
+// level 5, where the edges see it).
+TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
+  const double top = 0.44, apex = 0.47, half_width = (apex - top) / std::sqrt(3.0), centre = 8.5 / 16.0;
+  const std::array<std::array<double, 2>, 7> profile{{{0, 0}, {1, 0}, {1, top}, {centre + half_width, top},
+                                                      {centre, apex}, {centre - half_width, top}, {0, top}}};
+  TriSurface s;
+  for (const double x : {0.0, 1.0})
+    for (const auto& [y, z] : profile) s.points.emplace_back(x, y, z);
+  // The profile (y, z) is counter-clockwise seen from +x: the cap at x = 1 faces +x.
+  for (const auto& [a, b, c] : std::array<std::array<Index, 3>, 5>{{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {0, 5, 6}, {3, 4, 5}}}) {
+    s.triangles.push_back({a, c, b});
+    s.triangles.push_back({a + 7, b + 7, c + 7});
+  }
+  for (Index i = 0; i < 7; ++i) {
+    const Index j = (i + 1) % 7;
+    s.triangles.push_back({i, j, j + 7});
+    s.triangles.push_back({i, j + 7, i + 7});
+  }
+  const SurfaceDomain domain({{s, 0, "ridge"}});
+  const double exact = top + half_width * (apex - top);
+  CutcellOptions options;
+  options.octree.level = 4;
+  options.octree.margin = 0.0;
+  CutcellStats stats;
+  const ValidityReport report = check_validity(cutcell_mesh(domain, options, &stats));
+  ASSERT_TRUE(report.valid()) << report.problems.front();
+  EXPECT_GE(stats.max_leaf_level, 5);
+  const double ridge = half_width * (apex - top) / exact;
+  EXPECT_LT(std::abs(report.total_volume / exact - 1.0), 0.5 * ridge);
+}
+
 }  // namespace volmesh

@@ -77,13 +77,18 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     progress("interface points", 0.2);
     grid = make_grid(tree, domain, settings, grid.vertices);
     find_edge_points(grid, memo);
-    // Both rules on the whole grid; then on the leaves their splits touch, until none
-    // applies, and a grid of the new tree to check.
+    // The rules on the whole grid; then the first two on the leaves their splits touch,
+    // until none applies, and a grid of the new tree to check (the hidden-feature rule
+    // needs the edge points of a grid).
     const double clearance = settings.exact ? options.vertex_clearance : 0.0;
     std::vector<Index> split = leaves_crossed_twice(grid, crossing_level);
     if (clearance > 0.0) {
       const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance);
       split.insert(split.end(), thin.begin(), thin.end());
+    }
+    if (settings.exact) {
+      const std::vector<Index> hiding = leaves_hiding_features(grid, crossing_level, options.feature_theta);
+      split.insert(split.end(), hiding.begin(), hiding.end());
     }
     if (!split.empty()) {
       st.refinement_passes +=

@@ -252,6 +252,79 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
   return out;
 }
 
+namespace {
+
+// The normals at a leaf's exact edge points (on transition faces, at its children's edges),
+// each oriented from the lower region into the higher.
+void edge_point_normals(const Grid& grid, Index leaf, std::vector<Vec3>& out) {
+  const OctreeVertices& v = grid.vertices;
+  out.clear();
+  const auto add = [&](Index a, Index b) {
+    const Index edge = grid.find_edge(a, b);
+    if (edge == kNoIndex || !grid.edge_point[edge].exact) return;
+    // An edge point's normal runs from its first vertex's region into the other's.
+    const auto [first, second] = grid.edges[edge];
+    const Vec3& n = grid.edge_point[edge].normal;
+    out.push_back(grid.region[first] < grid.region[second] ? n : Vec3(-n));
+  };
+  for (int e = 0; e < 12; ++e) {
+    const Index a = v.leaf_corners[leaf][kEdgeCorners[e][0]], b = v.leaf_corners[leaf][kEdgeCorners[e][1]];
+    if (const Index m = v.leaf_edge_mid[leaf][e]; m == kNoIndex) {
+      add(a, b);
+    } else {
+      add(a, m);
+      add(m, b);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta) {
+  const Octree& tree = *grid.tree;
+  const OctreeVertices& v = grid.vertices;
+  // Per cut leaf, the three axis segments through its centre.
+  std::vector<Index> owner;
+  std::vector<Vec3> from, to;
+  for (Index i = 0; i < tree.num_leaves(); ++i) {
+    if (!grid.cut[i] || tree.leaf(i).level >= max_level) continue;
+    const Vec3 centre = 0.5 * (v.points[v.leaf_corners[i][0]] + v.points[v.leaf_corners[i][7]]);
+    const double half = 0.5 * grid.leaf_size(i);
+    for (int axis = 0; axis < 3; ++axis) {
+      owner.push_back(i);
+      from.push_back(centre - half * Vec3::Unit(axis));
+      to.push_back(centre + half * Vec3::Unit(axis));
+    }
+  }
+  std::vector<std::vector<Crossing>> hits;
+  grid.domain->crossings(from, to, hits);
+  std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
+  tbb::parallel_for(std::size_t{0}, owner.size() / 3, [&](std::size_t j) {
+    const Index i = owner[3 * j];
+    thread_local std::vector<Vec3> normals;
+    edge_point_normals(grid, i, normals);
+    if (normals.empty()) return;
+    // Only where the edge points see one smooth sheet: elsewhere the leaf's feature points
+    // and splits already follow the bends its edges show.
+    for (const Vec3& m : normals)
+      for (const Vec3& n : normals)
+        if (m.dot(n) < theta) return;
+    for (std::size_t k = 3 * j; k < 3 * j + 3 && !flag[i]; ++k)
+      for (const Crossing& c : hits[k]) {
+        if (c.before == c.after) continue;
+        const Vec3 n = c.before < c.after ? c.normal : Vec3(-c.normal);
+        if (std::none_of(normals.begin(), normals.end(), [&](const Vec3& m) { return m.dot(n) >= theta; })) {
+          flag[i] = 1;
+          break;
+        }
+      }
+  });
+  std::vector<Index> out;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (flag[i]) out.push_back(i);
+  return out;
+}
+
 Index relabel_midpoints(Grid& grid) {
   const OctreeVertices& v = grid.vertices;
   Index relabelled = 0;
