@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
@@ -82,22 +83,33 @@ TEST(CutcellMesh, BoxFacesNearGridPlanesKeepEdgesAndCorners) {
 }
 
 
-// The unit cube without its part x, y > c: an L-shaped prism, closed, outward.
-TriSurface l_shaped_prism(double c) {
-  const std::array<std::array<double, 2>, 6> l{{{0, 0}, {1, 0}, {1, c}, {c, c}, {c, 1}, {0, 1}}};
+// A prism: a counter-clockwise profile polygon in (u, v) with its caps' triangles, extruded
+// over w in [0, 1] and placed by `at(u, v, w)` (a right-handed map). Closed, outward.
+template <std::size_t N, std::size_t M>
+TriSurface prism(const std::array<std::array<double, 2>, N>& profile,
+                 const std::array<std::array<Index, 3>, M>& caps,
+                 const std::function<Vec3(double, double, double)>& at) {
+  const Index n = static_cast<Index>(N);
   TriSurface s;
-  for (const double z : {0.0, 1.0})
-    for (const auto& [x, y] : l) s.points.emplace_back(x, y, z);
-  for (const auto& [a, b, c] : std::array<std::array<Index, 3>, 4>{{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {3, 4, 5}}}) {
+  for (const double w : {0.0, 1.0})
+    for (const auto& [u, v] : profile) s.points.push_back(at(u, v, w));
+  for (const auto& [a, b, c] : caps) {
     s.triangles.push_back({a, c, b});
-    s.triangles.push_back({a + 6, b + 6, c + 6});
+    s.triangles.push_back({a + n, b + n, c + n});
   }
-  for (Index i = 0; i < 6; ++i) {
-    const Index j = (i + 1) % 6;
-    s.triangles.push_back({i, j, j + 6});
-    s.triangles.push_back({i, j + 6, i + 6});
+  for (Index i = 0; i < n; ++i) {
+    const Index j = (i + 1) % n;
+    s.triangles.push_back({i, j, j + n});
+    s.triangles.push_back({i, j + n, i + n});
   }
   return s;
+}
+
+// The unit cube without its part x, y > c: an L-shaped prism.
+TriSurface l_shaped_prism(double c) {
+  const std::array<std::array<double, 2>, 6> l{{{0, 0}, {1, 0}, {1, c}, {c, c}, {c, 1}, {0, 1}}};
+  return prism(l, std::array<std::array<Index, 3>, 4>{{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {3, 4, 5}}},
+               [](double u, double v, double w) { return Vec3(u, v, w); });
 }
 
 // The root is centred on the bounding box, so the L's inner faces lie on grid planes and its
@@ -137,7 +149,6 @@ TEST(CutcellMesh, LShapeSplitsItsPiecesAtTheInnerEdge) {
   }
 }
 
-}  // namespace
 // A block with a 60° ridge along x, narrower than a level-4 cell and lower than one, placed
 // between the grid lines (margin 0: the root is the unit cube from z = -0.265): no cell edge
 // crosses the ridge, whose cells see only the block's top, and their fans cut it off (volume
@@ -148,19 +159,9 @@ TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
   const double top = 0.44, apex = 0.47, half_width = (apex - top) / std::sqrt(3.0), centre = 8.5 / 16.0;
   const std::array<std::array<double, 2>, 7> profile{{{0, 0}, {1, 0}, {1, top}, {centre + half_width, top},
                                                       {centre, apex}, {centre - half_width, top}, {0, top}}};
-  TriSurface s;
-  for (const double x : {0.0, 1.0})
-    for (const auto& [y, z] : profile) s.points.emplace_back(x, y, z);
-  // The profile (y, z) is counter-clockwise seen from +x: the cap at x = 1 faces +x.
-  for (const auto& [a, b, c] : std::array<std::array<Index, 3>, 5>{{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {0, 5, 6}, {3, 4, 5}}}) {
-    s.triangles.push_back({a, c, b});
-    s.triangles.push_back({a + 7, b + 7, c + 7});
-  }
-  for (Index i = 0; i < 7; ++i) {
-    const Index j = (i + 1) % 7;
-    s.triangles.push_back({i, j, j + 7});
-    s.triangles.push_back({i, j + 7, i + 7});
-  }
+  const TriSurface s =
+      prism(profile, std::array<std::array<Index, 3>, 5>{{{0, 1, 2}, {0, 2, 3}, {0, 3, 5}, {0, 5, 6}, {3, 4, 5}}},
+            [](double y, double z, double x) { return Vec3(x, y, z); });
   const SurfaceDomain domain({{s, 0, "ridge"}});
   const double exact = top + half_width * (apex - top);
   CutcellOptions options;
@@ -173,5 +174,7 @@ TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
   const double ridge = half_width * (apex - top) / exact;
   EXPECT_LT(std::abs(report.total_volume / exact - 1.0), 0.5 * ridge);
 }
+
+}  // namespace
 
 }  // namespace volmesh
