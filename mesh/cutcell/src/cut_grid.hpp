@@ -133,11 +133,11 @@ std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);
 std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance);
 
 // Cut leaves below max_level whose edge points see one smooth sheet (their normals pairwise
-// within cosine theta, the feature threshold) while a crossing of the three axis segments
-// through the leaf's centre faces elsewhere (its normal's cosine below theta with every edge
-// point's): a sharp edge passing through the leaf without crossing its edges, which the
-// leaf's fan would cut off (fandisk's ridge at level 7). Normals oriented from the lower
-// region into the higher.
+// within cosine theta, the feature threshold) while a crossing of the two axis segments
+// through the leaf's centre that run most nearly along the sheet faces elsewhere (its
+// normal's cosine below theta with every edge point's): a sharp edge passing through the
+// leaf without crossing its edges, which the leaf's fan would cut off (fandisk's ridge at
+// level 7). Normals oriented from the lower region into the higher.
 std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta);
 
 // Splits these leaves (selected by the two rules above on a grid of the tree, each below

@@ -283,45 +283,56 @@ void edge_point_normals(const Grid& grid, Index leaf, std::vector<Vec3>& out) {
 std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta) {
   const Octree& tree = *grid.tree;
   const OctreeVertices& v = grid.vertices;
-  // Per cut leaf, the three axis segments through its centre.
-  std::vector<Index> owner;
+  // The cut leaves whose edge points see one smooth sheet (normals pairwise within theta):
+  // elsewhere the leaf's feature points and splits already follow the bends its edges show.
+  std::vector<Index> candidates;
+  for (Index i = 0; i < tree.num_leaves(); ++i)
+    if (grid.cut[i] && tree.leaf(i).level < max_level) candidates.push_back(i);
+  std::vector<std::vector<Vec3>> normals(candidates.size());
+  tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t k) {
+    edge_point_normals(grid, candidates[k], normals[k]);
+    for (const Vec3& m : normals[k])
+      for (const Vec3& n : normals[k])
+        if (m.dot(n) < theta) {
+          normals[k].clear();
+          return;
+        }
+  });
+  // Through each such leaf's centre, the two axis segments most nearly along its sheet: the
+  // third crosses the sheet itself.
+  std::vector<std::size_t> owner;  // into candidates, per segment
   std::vector<Vec3> from, to;
-  for (Index i = 0; i < tree.num_leaves(); ++i) {
-    if (!grid.cut[i] || tree.leaf(i).level >= max_level) continue;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (normals[k].empty()) continue;
+    const Index i = candidates[k];
     const Vec3 centre = 0.5 * (v.points[v.leaf_corners[i][0]] + v.points[v.leaf_corners[i][7]]);
     const double half = 0.5 * grid.leaf_size(i);
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& n : normals[k]) mean += n;
+    int across = 0;
+    mean.cwiseAbs().maxCoeff(&across);
     for (int axis = 0; axis < 3; ++axis) {
-      owner.push_back(i);
+      if (axis == across) continue;
+      owner.push_back(k);
       from.push_back(centre - half * Vec3::Unit(axis));
       to.push_back(centre + half * Vec3::Unit(axis));
     }
   }
   std::vector<std::vector<Crossing>> hits;
   grid.domain->crossings(from, to, hits);
-  std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
-  tbb::parallel_for(std::size_t{0}, owner.size() / 3, [&](std::size_t j) {
-    const Index i = owner[3 * j];
-    thread_local std::vector<Vec3> normals;
-    edge_point_normals(grid, i, normals);
-    if (normals.empty()) return;
-    // Only where the edge points see one smooth sheet: elsewhere the leaf's feature points
-    // and splits already follow the bends its edges show.
-    for (const Vec3& m : normals)
-      for (const Vec3& n : normals)
-        if (m.dot(n) < theta) return;
-    for (std::size_t k = 3 * j; k < 3 * j + 3 && !flag[i]; ++k)
-      for (const Crossing& c : hits[k]) {
-        if (c.before == c.after) continue;
-        const Vec3 n = c.before < c.after ? c.normal : Vec3(-c.normal);
-        if (std::none_of(normals.begin(), normals.end(), [&](const Vec3& m) { return m.dot(n) >= theta; })) {
-          flag[i] = 1;
-          break;
-        }
-      }
-  });
+  std::vector<std::uint8_t> flag(candidates.size(), 0);
+  for (std::size_t s = 0; s < owner.size(); ++s) {
+    const std::vector<Vec3>& sheet = normals[owner[s]];
+    for (const Crossing& c : hits[s]) {
+      if (c.before == c.after) continue;
+      const Vec3 n = c.before < c.after ? c.normal : Vec3(-c.normal);
+      if (std::none_of(sheet.begin(), sheet.end(), [&](const Vec3& m) { return m.dot(n) >= theta; }))
+        flag[owner[s]] = 1;
+    }
+  }
   std::vector<Index> out;
-  for (Index i = 0; i < tree.num_leaves(); ++i)
-    if (flag[i]) out.push_back(i);
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (flag[k]) out.push_back(candidates[k]);
   return out;
 }
 
