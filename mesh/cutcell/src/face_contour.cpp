@@ -96,6 +96,7 @@ class Contourer {
   int pinched_point() const;
   std::optional<Vec3> x_junction() const;
   Vec3 onto_feature(int p, int q, Vec3 x) const;
+  Vec3 onto_rounded_bend(int p, int q, const Vec3& x) const;
   Vec3 onto_boundary(const std::vector<int>& points, const Vec3& p) const;
   void chord(int p, int q);
   void star();
@@ -223,11 +224,24 @@ Vec3 Contourer::onto_feature(int p, int q, Vec3 x) const {
   return (refined - x).norm() < 0.05 * frame_.size ? refined : x;
 }
 
+// A bend rounded over several of a coarse surface's facets (elephant's, about one per cell):
+// the planes of the facets at p and q meet beyond the surface between them, there by up to
+// half the face, and the Newton step found no two surfaces meeting there. When the surface
+// found from x along the traces' mean normal, within a face either way, lies farther than a
+// tenth of the face, x goes onto it: both segments then lie on the surface's side of it.
+Vec3 Contourer::onto_rounded_bend(int p, int q, const Vec3& x) const {
+  if (!options_.surface_near || face_.on_root) return x;
+  const Vec3 d = in_plane(at(p).normal - at(q).normal, frame_.normal);  // both out of the region before p
+  if (!(d.norm() > 1e-12)) return x;
+  const auto found = options_.surface_near(x, frame_.size * d.normalized());
+  return found && (found->first - x).norm() > 0.1 * frame_.size ? found->first : x;
+}
+
 bool Contourer::try_feature_point(int p, int q) {
   const Vec3 mp = projected_normal(p), mq = projected_normal(q);
   // mp points from region A into B, mq from B into A: a straight interface has mp = -mq.
   if (mp.isZero() || mq.isZero() || !(mp.dot(-mq) < options_.feature_theta)) return false;
-  Vec3 point = onto_feature(p, q, tangent_point({p, q}));
+  Vec3 point = onto_rounded_bend(p, q, onto_feature(p, q, tangent_point({p, q})));
   // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
   // just beyond: pulled just inside, it keeps the face's polygons apart.
   const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;
