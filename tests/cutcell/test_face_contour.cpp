@@ -343,6 +343,38 @@ TEST(FaceContour, SharpCornerGetsAFeaturePoint) {
   EXPECT_NEAR(polygon_area(p, c.polygons[polygon_of_corner(f, c, 0)]), 0.42, 1e-12);
 }
 
+// Region 1 = the disc of radius 0.8 about corner 0, a bend of 90 degrees within the face (a
+// coarse model's facets turning about one per cell): the tangent lines meet at (0.8, 0.8),
+// 0.33 beyond the arc, and the Newton step finds no two surfaces meeting there. The feature
+// point goes onto the arc, found along the traces' mean normal.
+TEST(FaceContour, ARoundedBendPutsTheFeaturePointOnTheSurface) {
+  const double r = 0.8;
+  Square sq{{1, 0, 0, 0}, {}};
+  sq.side[0] = {{Vec3(r, 0, 0), Vec3(1, 0, 0)}};
+  sq.side[3] = {{Vec3(0, r, 0), Vec3(0, -1, 0)}};
+  const FaceInput f = make_face(sq);
+  FaceContourOptions options;
+  // The circle's crossing of x -+ d nearest x whose outward normal lies within 25 degrees of d.
+  options.surface_near = [r](const Vec3& x, const Vec3& d) -> std::optional<std::pair<Vec3, Vec3>> {
+    const Vec3 a = x - d, b = x + d, ab = b - a;
+    const double qa = ab.squaredNorm(), qb = 2.0 * a.dot(ab), qc = a.squaredNorm() - r * r;
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc < 0.0) return std::nullopt;
+    std::optional<std::pair<Vec3, Vec3>> best;
+    for (const double t : {(-qb - std::sqrt(disc)) / (2.0 * qa), (-qb + std::sqrt(disc)) / (2.0 * qa)}) {
+      const Vec3 p = a + t * ab, n = p.normalized();
+      if (t < 0.0 || t > 1.0 || !(n.dot(d.normalized()) > kSameSurfaceCosine)) continue;
+      if (!best || (p - x).norm() < (best->first - x).norm()) best = {p, n};
+    }
+    return best;
+  };
+  const FaceContour c = contour_face(f, options);
+  ASSERT_EQ(c.kind, FacePointKind::feature_point);
+  EXPECT_NEAR(c.point.norm(), r, 1e-12);
+  EXPECT_NEAR(c.point.x(), c.point.y(), 1e-12);
+  expect_partition(f, c);
+}
+
 TEST(FaceContour, PublishedM3CPutsTheFacePointAtTheCentre) {
   FaceContourOptions options;
   options.exact_points = false;
