@@ -67,18 +67,22 @@ void grade(Octree& tree, int cells_between_levels) {
   const int reach = cells_between_levels - 1;
   if (reach == 0) return;
   for (int level = tree.max_leaf_level(); level >= 2; --level) {
-    // The buffer is fixed before splitting: leaves it creates do not widen it in turn.
-    const std::vector<GridPoint> centres = buffer_centres(covered_cells(tree, level), level, reach);
-    for (;;) {
+    // The buffer is fixed before splitting: leaves it creates do not widen it in turn. A
+    // centre once in a leaf of the level stays so (splits only refine): it is dropped.
+    std::vector<GridPoint> centres = buffer_centres(covered_cells(tree, level), level, reach);
+    while (!centres.empty()) {
       std::vector<Index> coarse;
+      std::vector<GridPoint> pending;
       for (const GridPoint& p : centres) {
         const Index leaf = tree.leaf_containing(p);
-        if (tree.leaf(leaf).level < level) coarse.push_back(leaf);
+        if (tree.leaf(leaf).level >= level) continue;
+        coarse.push_back(leaf);
+        pending.push_back(p);
       }
       std::sort(coarse.begin(), coarse.end());
       coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
-      if (coarse.empty()) break;
-      split_balanced(tree, std::move(coarse));
+      if (!coarse.empty()) split_balanced(tree, std::move(coarse));
+      centres = std::move(pending);
     }
   }
 }

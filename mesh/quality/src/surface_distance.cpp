@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -89,39 +90,41 @@ class Target {
     return std::sqrt(CGAL::squared_distance(p, triangles_[triangle]));
   }
 
-  // Whether every corner of the other triangles lies within `tolerance` of the plane of `triangle`.
-  bool coplanar(std::size_t triangle, const std::array<std::size_t, 3>& others, double tolerance) const {
+  // The plane of a triangle, with an orthonormal frame in it; nullopt for a degenerate one.
+  struct Plane {
+    Point origin;
+    Vector normal, u, w;
+    double height(const Point& p) const { return std::abs((p - origin) * normal); }
+    Point2 in_plane(const Point& p) const { return {(p - origin) * u, (p - origin) * w}; }
+  };
+  std::optional<Plane> plane(std::size_t triangle) const {
     const Triangle& t = triangles_[triangle];
-    if (t.is_degenerate()) return false;
-    const Kernel::Plane_3 plane = t.supporting_plane();
-    const double scale = std::sqrt(plane.orthogonal_vector().squared_length());
-    for (std::size_t o : others)
+    if (t.is_degenerate()) return std::nullopt;
+    Vector n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    n = n / std::sqrt(n.squared_length());
+    Vector u = t[1] - t[0];
+    u = u / std::sqrt(u.squared_length());
+    return Plane{t[0], n, u, CGAL::cross_product(n, u)};
+  }
+
+  // Whether every corner of these triangles lies within `tolerance` of the plane.
+  bool within(const Plane& plane, const std::array<std::size_t, 3>& triangles, double tolerance) const {
+    for (const std::size_t t : triangles)
       for (int k = 0; k < 3; ++k)
-        if (std::abs(CGAL::to_double(plane.a() * triangles_[o][k].x() + plane.b() * triangles_[o][k].y() +
-                                     plane.c() * triangles_[o][k].z() + plane.d())) > tolerance * scale)
-          return false;
+        if (plane.height(triangles_[t][k]) > tolerance) return false;
     return true;
   }
 
   // An upper bound on the distance from every point of `piece` to the surface when the
-  // surface's triangles in the plane of `triangle` (within `tolerance`) cover the piece's
-  // projection onto that plane: the distance to the plane then bounds it, and is largest at a
-  // corner. +inf when they do not cover it, or when the piece stands steeply on the plane.
-  double covered_plane_bound(const std::array<Point, 3>& piece, std::size_t triangle, double reach,
+  // surface's triangles in the plane (within `tolerance`) cover the piece's projection onto
+  // it: the distance to the plane then bounds it, and is largest at a corner. +inf when they
+  // do not cover it, or when the piece stands steeply on the plane.
+  double covered_plane_bound(const std::array<Point, 3>& piece, const Plane& plane, double reach,
                              double tolerance) const {
-    const Triangle& t = triangles_[triangle];
-    Vector n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-    n = n / std::sqrt(n.squared_length());
     const Vector piece_normal = CGAL::cross_product(piece[1] - piece[0], piece[2] - piece[0]);
     const double piece_norm = std::sqrt(piece_normal.squared_length());
-    if (!(std::abs(piece_normal * n) >= 0.5 * piece_norm)) return kInfinity;
-    Vector u = t[1] - t[0];
-    u = u / std::sqrt(u.squared_length());
-    const Vector w = CGAL::cross_product(n, u);
-    const auto in_plane = [&](const Point& p) -> Point2 { return {(p - t[0]) * u, (p - t[0]) * w}; };
-    const auto height = [&](const Point& p) { return std::abs((p - t[0]) * n); };
-
-    Polygon2 projected{in_plane(piece[0]), in_plane(piece[1]), in_plane(piece[2])};
+    if (!(std::abs(piece_normal * plane.normal) >= 0.5 * piece_norm)) return kInfinity;
+    Polygon2 projected{plane.in_plane(piece[0]), plane.in_plane(piece[1]), plane.in_plane(piece[2])};
     if (area2(projected) < 0.0) std::swap(projected[1], projected[2]);
     const double projected_area = area2(projected);
 
@@ -133,8 +136,8 @@ class Target {
     double covered = 0.0;
     for (const auto it : near) {
       const Triangle& s = *it;
-      if (height(s[0]) > tolerance || height(s[1]) > tolerance || height(s[2]) > tolerance) continue;
-      std::array<Point2, 3> flat{in_plane(s[0]), in_plane(s[1]), in_plane(s[2])};
+      if (plane.height(s[0]) > tolerance || plane.height(s[1]) > tolerance || plane.height(s[2]) > tolerance) continue;
+      std::array<Point2, 3> flat{plane.in_plane(s[0]), plane.in_plane(s[1]), plane.in_plane(s[2])};
       const double a = cross2(flat[0], flat[1], flat[2]);
       if (a == 0.0) continue;
       if (a < 0.0) std::swap(flat[1], flat[2]);
@@ -143,7 +146,7 @@ class Target {
     // A closed surface's triangles do not overlap, so the areas add up to the projection's
     // exactly where they cover it; more than that means overlapping triangles: no verdict.
     if (std::abs(covered - projected_area) > 1e-11 * projected_area) return kInfinity;
-    return std::max({height(piece[0]), height(piece[1]), height(piece[2])}) + tolerance;
+    return std::max({plane.height(piece[0]), plane.height(piece[1]), plane.height(piece[2])}) + tolerance;
   }
 
  private:
@@ -160,13 +163,19 @@ struct Piece {
   bool operator<(const Piece& other) const { return upper < other.upper; }
 };
 
+// Whether corner k is the first of the piece's corners closest to its triangle.
+bool first_at_its_triangle(const Piece& p, int k) {
+  const std::size_t t = p.closest[k].triangle;
+  return !((k > 0 && t == p.closest[0].triangle) || (k > 1 && t == p.closest[1].triangle));
+}
+
 // Every point of the piece is within the largest corner distance to any one triangle: the
 // distance to a triangle is convex. The triangles tried are those the corners are closest to.
 double corner_bound(const Target& target, const Piece& p) {
   double best = kInfinity;
   for (int k = 0; k < 3; ++k) {
+    if (!first_at_its_triangle(p, k)) continue;
     const std::size_t t = p.closest[k].triangle;
-    if ((k > 0 && t == p.closest[0].triangle) || (k > 1 && t == p.closest[1].triangle)) continue;
     double worst = p.closest[k].distance;
     for (int i = 0; i < 3; ++i)
       if (i != k) worst = std::max(worst, target.distance(t, p.corner[i]));
@@ -184,9 +193,10 @@ double plane_bound(const Target& target, const Piece& p, double tolerance) {
   const double reach =
       std::max({p.closest[0].distance, p.closest[1].distance, p.closest[2].distance}) + tolerance;
   for (int k = 0; k < 3; ++k) {
-    if ((k > 0 && tri[k] == tri[0]) || (k > 1 && tri[k] == tri[1])) continue;
-    if (!target.coplanar(tri[k], tri, tolerance)) continue;
-    const double bound = target.covered_plane_bound(p.corner, tri[k], reach, tolerance);
+    if (!first_at_its_triangle(p, k)) continue;
+    const auto plane = target.plane(tri[k]);
+    if (!plane || !target.within(*plane, tri, tolerance)) continue;
+    const double bound = target.covered_plane_bound(p.corner, *plane, reach, tolerance);
     if (bound < kInfinity) return bound;
   }
   return kInfinity;
