@@ -3,6 +3,9 @@ output directory:
 
   report.py tables OUT CASE:LEVEL,LEVEL,LEVEL ...   the paper's Tables 1 and 2 side by side
   report.py snappy OUT LEVEL SURFACE ...            snappyHexMesh against volmesh cutcell
+  report.py levels OUT LEVEL LEVEL,LEVEL,... SURFACE ...
+                                                    the same surfaces per level (LEVEL: the
+                                                    one compared with snappyHexMesh)
 
 Per volmesh run NAME: NAME.json (`volmesh mesh --json`) and NAME.time (/usr/bin/time
 "%e %U %S"). Per snappyHexMesh case: NAME.snappy ("cells wall cpu"). Per mesh checked:
@@ -135,14 +138,39 @@ def snappy(out, level, surfaces):
     print()
 
 
+def levels(out, compared_level, level_list, surfaces):
+    """The cut-cell mesh of each surface per level: cells, time, Hausdorff distance, and how
+    much it falls from the level before (4x at second order, 2x at first)."""
+    print("| surface | `--level` | cells | time s | Hausdorff / diagonal | mesh→surface "
+          "| surface→mesh | fall from the level before | snappyHexMesh's Hausdorff / diagonal |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for surface in surfaces:
+        snappy_distance = load_json(out / f"{surface}-snappy.check.json")["surface"]["hausdorff_relative"]
+        before = None
+        for level in level_list.split(","):
+            name = f"{surface}-volmesh" if level == compared_level else f"{surface}-l{level}"
+            run = load_json(out / f"{name}.json")
+            check = load_json(out / f"{name}.check.json")["surface"]
+            d, distance = check["diagonal"], check["hausdorff_relative"]
+            fall = f"{before / distance:.2f}×" if before else ""
+            print(f"| {surface} | {level} | {run['cells']:,} | {run['time_seconds']:.2f} "
+                  f"| {distance:.2e} | {check['hausdorff_mesh_to_surface'] / d:.2e} "
+                  f"| {check['hausdorff_surface_to_mesh'] / d:.2e} | {fall} | {snappy_distance:.2e} |")
+            before = distance
+    print()
+
+
 def main():
     out = Path(sys.argv[2])
     if sys.argv[1] == "tables":
         tables(out, sys.argv[3:])
     elif sys.argv[1] == "snappy":
         snappy(out, sys.argv[3], sys.argv[4:])
+    elif sys.argv[1] == "levels":
+        levels(out, sys.argv[3], sys.argv[4], sys.argv[5:])
     else:
-        sys.exit("usage: report.py tables OUT CASE:L,L,L ... | snappy OUT LEVEL SURFACE ...")
+        sys.exit("usage: report.py tables OUT CASE:L,L,L ... | snappy OUT LEVEL SURFACE ... "
+                 "| levels OUT LEVEL L,L,L SURFACE ...")
 
 
 if __name__ == "__main__":

@@ -8,7 +8,8 @@
 #      knot1 (libcgal-demo) at comparable cell counts: both times, both two-sided boundary
 #      Hausdorff distances relative to the bounding-box diagonal (targets: >= 50x faster at
 #      <= 1/5 of snappyHexMesh's distance), and checkMesh's verdict on both meshes;
-#   3. PNG pictures: both cases coloured by region, and clipped views showing the cut cells.
+#   3. the same surfaces at the levels around it: how the Hausdorff distance falls per level;
+#   4. PNG pictures: both cases coloured by region, and clipped views showing the cut cells.
 # Writes build/validation-octree/report.md with the pictures beside it, and prints it.
 # VALIDATION_BUILD=DIR builds and writes there instead.
 set -euo pipefail
@@ -31,6 +32,7 @@ SURFACES="elephant fandisk knot1"
 SNAPPY_LEVEL=3          # refinementSurfaces level, as in the measurement
 SNAPPY_BACKGROUND=18    # background cells along the longest side: ~126,000 cells on fandisk, knot1
 VOLMESH_LEVEL=7         # the cut-cell level nearest snappyHexMesh's cell count
+HAUSDORFF_LEVELS="6 7 8"  # the distance per level on the same surfaces (7: the run above)
 
 # shellcheck source=setup.sh
 . "$HERE/setup.sh"
@@ -75,6 +77,13 @@ for surface in $SURFACES; do
   echo "cutcell $surface --level $VOLMESH_LEVEL"
   cutcell "$surface-volmesh" "$MESHES/$surface.off" "$VOLMESH_LEVEL" "$OUT/$surface-volmesh.foam/"
   check "$surface-volmesh" "$OUT/$surface-volmesh.foam" "$MESHES/$surface.off"
+  for l in $HAUSDORFF_LEVELS; do
+    [ "$l" = "$VOLMESH_LEVEL" ] && continue
+    echo "cutcell $surface --level $l"
+    cutcell "$surface-l$l" "$MESHES/$surface.off" "$l" "$OUT/$surface-l$l.vtu"
+    "$VOLMESH" check "$OUT/$surface-l$l.vtu" --surface "$MESHES/$surface.off" --json \
+      > "$OUT/$surface-l$l.check.json" || true
+  done
 done
 LOAD_AFTER=$(load)
 
@@ -123,6 +132,9 @@ report=$BUILD/report.md
   echo "Targets: volmesh ≥ 50× faster, at ≤ 1/5 of snappyHexMesh's Hausdorff distance."
   echo
   "$PY" "$HERE/report.py" snappy "$OUT" "$SNAPPY_LEVEL" $SURFACES
+  echo "### The Hausdorff distance per level"
+  echo
+  "$PY" "$HERE/report.py" levels "$OUT" "$VOLMESH_LEVEL" "${HAUSDORFF_LEVELS// /,}" $SURFACES
   echo "## Pictures"
   echo
   echo "Coloured by region; the clipped views keep the cells whose centroid lies on one side of"
