@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "../support/unit_cube_meshes.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/geometry.hpp"
@@ -88,6 +91,46 @@ TEST(Validity, DuplicateFaceIsReported) {
   PolyMesh p = to_poly_mesh(test::unit_cube_hex());
   p.add_face(p.face(0), 0, kNoIndex, 0);
   EXPECT_EQ(check_validity(p).duplicate_faces, 1);
+}
+
+// A cube whose bottom face a b c d is cut into a b c, a needle a c m with m on the diagonal
+// a c up to one unit in the last place, and m c d a: closed edge by edge, and the needle's
+// area is not exactly zero.
+TEST(Validity, AFaceWithItsVerticesInALineIsDegenerate) {
+  const PolyMesh p = to_poly_mesh(test::unit_cube_hex());
+  PolyMesh q;
+  q.points = p.points;
+  q.cell_region = p.cell_region;
+  q.tag_names = p.tag_names;
+  bool cut = false;
+  for (Index f = 0; f < p.num_faces(); ++f) {
+    const auto loop = p.face(f);
+    const bool bottom = std::all_of(loop.begin(), loop.end(), [&](Index v) { return p.points[v].z() == 0.0; });
+    if (!bottom) {
+      q.add_face(loop, p.owner[f], p.neighbour[f], p.face_tag[f]);
+      continue;
+    }
+    const Index a = loop[0], b = loop[1], c = loop[2], d = loop[3];
+    Vec3 m = p.points[a] + 0.3 * (p.points[c] - p.points[a]);
+    m.y() = std::nextafter(m.y(), 1.0);
+    const Index mi = static_cast<Index>(q.points.size());
+    q.points.push_back(m);
+    q.add_face(std::vector<Index>{a, b, c}, p.owner[f], kNoIndex, p.face_tag[f]);
+    q.add_face(std::vector<Index>{a, c, mi}, p.owner[f], kNoIndex, p.face_tag[f]);
+    q.add_face(std::vector<Index>{mi, c, d, a}, p.owner[f], kNoIndex, p.face_tag[f]);
+    const Vec3 needle = (p.points[c] - p.points[a]).cross(m - p.points[a]);
+    ASSERT_GT(needle.norm(), 0.0);  // not caught by an exact zero test
+    ASSERT_LT(needle.norm(), 1e-15);
+    cut = true;
+  }
+  ASSERT_TRUE(cut);
+  const ValidityReport r = check_validity(q);
+  EXPECT_EQ(r.open_cells, 0);
+  EXPECT_EQ(r.unmatched_cell_edges, 0);
+  EXPECT_EQ(r.degenerate_faces, 1);
+  EXPECT_FALSE(r.valid());
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_NE(r.problems[0].find("zero area"), std::string::npos) << r.problems[0];
 }
 
 TEST(Geometry, CentroidsOfAnAsymmetricCell) {

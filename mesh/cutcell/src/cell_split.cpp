@@ -631,6 +631,11 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
 
 // checkMesh's verdict on a face between the pieces with these centres (face_metrics.hpp):
 // above 1 it is rejected. `outside` when the lower side is region 0: a boundary face.
+// A triangle this flat (area / longest side squared) is as bad as an inverted one: its
+// corners lie in a line up to rounding, it has no normal to orient it (`volmesh check`
+// rejects it at 1e-12).
+constexpr double kFlatTriangle = 1e-9;
+
 double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
                          bool outside) const {
   FaceGeometry g;
@@ -638,6 +643,8 @@ double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec
     const Vec3 &a = position_[face[0]], &b = position_[face[1]], &c = position_[face[2]];
     g.centre = (a + b + c) / 3.0;
     g.area_vector = 0.5 * (b - a).cross(c - a);
+    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    if (g.area_vector.norm() <= kFlatTriangle * longest) return kInvertedFace;
   } else {
     g = polygon_geometry(position_, std::vector<Index>(face.begin(), face.end()));
   }

@@ -10,6 +10,9 @@ namespace volmesh {
 
 struct ValidityOptions {
   double closed_tolerance = 1e-8;  // |sum of oriented face areas| / sum of |face areas|
+  // |face area| / (longest edge)^2 at or below this: zero area, the vertices in a line up to
+  // rounding (no normal to orient the face by).
+  double zero_area_tolerance = 1e-12;
   int max_messages = 20;           // detailed problems kept in the report
 };
 
