@@ -629,13 +629,13 @@ std::vector<Vec3> Splitter::piece_centres(const std::vector<std::vector<Triangle
   return centre;
 }
 
-// checkMesh's verdict on a face between the pieces with these centres (face_metrics.hpp):
-// above 1 it is rejected. `outside` when the lower side is region 0: a boundary face.
 // A triangle this flat (area / longest side squared) is as bad as an inverted one: its
 // corners lie in a line up to rounding, it has no normal to orient it (`volmesh check`
 // rejects it at 1e-12).
 constexpr double kFlatTriangle = 1e-9;
 
+// checkMesh's verdict on a face between the pieces with these centres (face_metrics.hpp):
+// above 1 it is rejected. `outside` when the lower side is region 0: a boundary face.
 double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec3& neighbour,
                          bool outside) const {
   FaceGeometry g;
