@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <functional>
 
+#include "../domain/test_surface_domain_support.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/surface_domain.hpp"
-#include "volmesh/io/surface_check.hpp"
-#include "volmesh/io/surface_io.hpp"
 
 namespace volmesh {
 namespace {
@@ -186,11 +184,9 @@ TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
 // squared), and a cell's triangulations count one as inverted, so another is chosen.
 // icosahedron.off had one at level 6; 16 of the 249 meshes of libcgal-demo at levels 4-6 had one.
 TEST(CutcellMesh, NoBoundaryTriangleHasItsCornersInALine) {
-  const auto path = std::filesystem::path(VOLMESH_CGAL_DATA) / "meshes" / "icosahedron.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo is not installed";
-  TriSurface s = read_surface(path);
-  check_surface(s, path.string());
-  const SurfaceDomain domain({{std::move(s), 0, path.string()}});
+  auto surface = surface_test::cgal_mesh("icosahedron.off");
+  if (!surface) GTEST_SKIP() << "libcgal-demo is not installed";
+  const SurfaceDomain domain({{std::move(*surface), 0, "icosahedron.off"}});
   CutcellOptions options;
   options.octree.level = 6;
   const PolyMesh mesh = cutcell_mesh(domain, options);
