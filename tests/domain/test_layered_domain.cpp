@@ -132,30 +132,72 @@ std::vector<Expected> analytic_crossings(const Vec3& a, const Vec3& b) {
   return out;
 }
 
+// The crossings of [a, b] against the planes' (to 1e-12), the regions in between against
+// their heights; returns how many.
+std::size_t expect_planes_crossings(const LayeredDomain& d, const Vec3& a, const Vec3& b) {
+  const std::vector<Expected> expected = analytic_crossings(a, b);
+  const std::vector<Crossing> got = d.crossings(a, b);
+  EXPECT_EQ(got.size(), expected.size()) << a.transpose() << " -> " << b.transpose();
+  if (got.size() != expected.size()) return 0;
+  Index current = d.region(a);
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    EXPECT_NEAR(got[k].t, expected[k].t, 1e-12);
+    EXPECT_LT((got[k].normal - expected[k].normal).norm(), 1e-12);
+    EXPECT_LT((got[k].point - (a + got[k].t * (b - a))).norm(), 1e-15 * 4);
+    EXPECT_EQ(got[k].before, current);
+    EXPECT_NE(got[k].after, got[k].before);
+    EXPECT_EQ(got[k].after, expected_region(a + (expected[k].t + 1e-9) * (b - a)));
+    current = got[k].after;
+  }
+  EXPECT_EQ(current, d.region(b));
+  return got.size();
+}
+
 TEST(LayeredDomain, CrossingsOfRandomSegmentsMatchThePlanesTo1e12) {
   const LayeredDomain d = three_planes();
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-0.3, 1.3);
-  int crossings = 0;
+  std::size_t crossings = 0;
   for (int i = 0; i < 3000; ++i) {
     const Vec3 a(2 * u(rng), u(rng), u(rng)), b(2 * u(rng), u(rng), u(rng));
-    const std::vector<Expected> expected = analytic_crossings(a, b);
-    const std::vector<Crossing> got = d.crossings(a, b);
-    ASSERT_EQ(got.size(), expected.size()) << a.transpose() << " -> " << b.transpose();
-    Index current = d.region(a);
-    for (std::size_t k = 0; k < got.size(); ++k) {
-      EXPECT_NEAR(got[k].t, expected[k].t, 1e-12);
-      EXPECT_LT((got[k].normal - expected[k].normal).norm(), 1e-12);
-      EXPECT_LT((got[k].point - (a + got[k].t * (b - a))).norm(), 1e-15 * 4);
-      EXPECT_EQ(got[k].before, current);
-      EXPECT_NE(got[k].after, got[k].before);
-      EXPECT_EQ(got[k].after, expected_region(a + (expected[k].t + 1e-9) * (b - a)));
-      current = got[k].after;
-    }
-    EXPECT_EQ(current, d.region(b));
-    crossings += static_cast<int>(got.size());
+    crossings += expect_planes_crossings(d, a, b);
   }
-  EXPECT_GT(crossings, 3000);
+  EXPECT_GT(crossings, 3000u);
+}
+
+// The same planes as graphs on a 65 x 33 grid (8,192 triangles each): short segments find
+// their triangles in the sheets' buckets, long ones in the tree; both must miss none, also
+// where a segment runs through the triangles' sides and corners.
+TEST(LayeredDomain, CrossingsOfFinelyTriangulatedPlanesMatchThePlanesTo1e12) {
+  LayeredModel m;
+  m.box = kBox;
+  LayerBlock b;
+  for (std::size_t i = 0; i < kPlanes.size(); ++i)
+    b.horizons.push_back(graph_sheet(kBox, 2, 65, 33, [i](double x, double y) { return kPlanes[i].height(x, y); },
+                                     "p" + std::to_string(i)));
+  b.labels = {1, 2, 3, 4};
+  m.blocks.push_back(b);
+  const LayeredDomain d(m);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0), step(-0.05, 0.05);
+  std::size_t crossings = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 a(2 * u(rng), u(rng), u(rng));
+    crossings += expect_planes_crossings(d, a, a + Vec3(step(rng), step(rng), 4 * step(rng)));
+  }
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 a(2 * u(rng), u(rng), u(rng)), c(2 * u(rng), u(rng), u(rng));
+    crossings += expect_planes_crossings(d, a, c);
+  }
+  // Vertical segments through grid vertices and along grid lines (x = i / 32, y = j / 32).
+  for (int i = 0; i <= 64; i += 3)
+    for (int j = 0; j <= 32; j += 3) {
+      const double x = i / 32.0, y = j / 32.0;
+      EXPECT_EQ(expect_planes_crossings(d, {x, y, 0.05}, {x, y, 0.95}), 3u) << x << " " << y;
+      crossings += expect_planes_crossings(d, {x, y + 0.01, 0.45}, {x, y + 0.02, 0.65});
+      crossings += expect_planes_crossings(d, {x + 0.01, y, 0.45}, {x + 0.02, y, 0.65});
+    }
+  EXPECT_GT(crossings, 5000u);
 }
 
 TEST(LayeredDomain, CrossingsAtEndPointsOnAnInterface) {

@@ -83,9 +83,24 @@ Model::Model(LayeredModel in) : box(in.box), name(std::move(in.name)) {
 std::vector<surface::SegmentHit> Model::hits(const Vec3& a, const Vec3& b) const {
   std::vector<surface::SegmentHit> out = exact_planes->hits(a, b);
   if (!exact_horizons) return out;
-  for (surface::SegmentHit h : exact_horizons->hits(a, b)) {
-    h.triangle += first_horizon_triangle;
-    out.push_back(h);
+  // A short segment (a leaf's edge) finds its candidates in each horizon's buckets, most
+  // horizons passing by below or above: a few comparisons instead of a tree's descent.
+  constexpr std::size_t kMaxBuckets = 16;
+  const std::size_t planes = out.size();
+  const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  std::vector<Index> near;
+  surface::SegmentHit hit;
+  for (std::size_t s = kFirstFault + faults; s < sheets.size(); ++s) {
+    if (!sheets[s].triangles_near(lo, hi, kMaxBuckets, near)) {
+      out.resize(planes);
+      for (surface::SegmentHit h : exact_horizons->hits(a, b)) {
+        h.triangle += first_horizon_triangle;
+        out.push_back(h);
+      }
+      return out;
+    }
+    for (const Index k : near)
+      if (surface::segment_hit(geometry, geometry.first_triangle[s] + k, a, b, hit)) out.push_back(hit);
   }
   return out;
 }

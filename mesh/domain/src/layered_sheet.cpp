@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -203,11 +204,44 @@ void GraphSheet::build_buckets() {
   }
   for (std::size_t k = 1; k < first_.size(); ++k) first_[k] += first_[k - 1];
   members_.resize(first_.back());
+  w_range_.assign(first_.size() - 1, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
   std::vector<Index> fill(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (Index j = range[t][2]; j <= range[t][3]; ++j)
-      for (Index i = range[t][0]; i <= range[t][1]; ++i)
+      for (Index i = range[t][0]; i <= range[t][1]; ++i) {
         members_[fill[i + nu_ * j]++] = static_cast<Index>(t);
+        for (Index c : triangles[t]) {
+          auto& [lo, hi] = w_range_[i + nu_ * j];
+          lo = std::min(lo, points[c][axis]);
+          hi = std::max(hi, points[c][axis]);
+        }
+      }
+}
+
+// A triangle meeting the box has a point in it whose bucket, by the monotony of bucket(),
+// lies in the box's bucket range and in the triangle's: the triangle is among its members.
+bool GraphSheet::triangles_near(const Vec3& lo, const Vec3& hi, std::size_t max_buckets,
+                                std::vector<Index>& out) const {
+  out.clear();
+  const auto a = bucket(lo[u], lo[v]), b = bucket(hi[u], hi[v]);
+  if (static_cast<std::size_t>(b[0] - a[0] + 1) * static_cast<std::size_t>(b[1] - a[1] + 1) > max_buckets)
+    return false;
+  if (hi[u] < u0_ || lo[u] > u1_ || hi[v] < v0_ || lo[v] > v1_) return true;
+  for (Index j = a[1]; j <= b[1]; ++j)
+    for (Index i = a[0]; i <= b[0]; ++i) {
+      const Index k = i + nu_ * j;
+      if (w_range_[k][0] > hi[axis] || w_range_[k][1] < lo[axis]) continue;
+      for (Index m = first_[k]; m < first_[k + 1]; ++m) {
+        const auto& t = triangles[members_[m]];
+        const Vec3 &p = points[t[0]], &q = points[t[1]], &r = points[t[2]];
+        if ((p.cwiseMax(q).cwiseMax(r).array() >= lo.array()).all() &&
+            (p.cwiseMin(q).cwiseMin(r).array() <= hi.array()).all())
+          out.push_back(members_[m]);
+      }
+    }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return true;
 }
 
 Index GraphSheet::locate(const Vec3& p) const {
@@ -216,6 +250,10 @@ Index GraphSheet::locate(const Vec3& p) const {
   const Point2 q(p[u], p[v]);
   for (Index k = first_[i + nu_ * j]; k < first_[i + nu_ * j + 1]; ++k) {
     const auto& t = triangles[members_[k]];
+    const Vec3 &x = points[t[0]], &y = points[t[1]], &z = points[t[2]];
+    if (p[u] < std::min({x[u], y[u], z[u]}) || p[u] > std::max({x[u], y[u], z[u]}) ||
+        p[v] < std::min({x[v], y[v], z[v]}) || p[v] > std::max({x[v], y[v], z[v]}))
+      continue;  // outside its box: no predicate needed
     const auto corner = [&](int c) { return Point2(points[t[c]][u], points[t[c]][v]); };
     const Point2 a = corner(0), b = corner(1), c = corner(2);
     if (CGAL::orientation(a, b, q) != CGAL::NEGATIVE &&

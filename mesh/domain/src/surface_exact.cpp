@@ -164,6 +164,11 @@ ExactTree::ExactTree(const SurfaceGeometry& geometry)
     : impl_(std::make_unique<const Impl>(geometry)) {}
 ExactTree::~ExactTree() = default;
 
+bool segment_hit(const SurfaceGeometry& g, Index t, const Vec3& a, const Vec3& b, SegmentHit& hit) {
+  const Triangle triangle(point(g.corner(t, 0)), point(g.corner(t, 1)), point(g.corner(t, 2)));
+  return classify(triangle, point(a), point(b), t, hit);
+}
+
 std::vector<SegmentHit> ExactTree::hits(const Vec3& a, const Vec3& b) const {
   return impl_->hits(point(a), point(b));
 }

@@ -29,6 +29,10 @@ struct Containment {
   bool inside() const { return on || winding > 0; }
 };
 
+// How the closed segment [a, b] meets triangle t of the geometry, if it does (exact; the
+// test ExactTree::hits applies to its candidates).
+bool segment_hit(const SurfaceGeometry& geometry, Index t, const Vec3& a, const Vec3& b, SegmentHit& hit);
+
 class ExactTree {
  public:
   explicit ExactTree(const SurfaceGeometry& geometry);
