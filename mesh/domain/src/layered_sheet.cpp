@@ -265,6 +265,12 @@ Index GraphSheet::locate(const Vec3& p) const {
 }
 
 int GraphSheet::side(const Vec3& p) const {
+  if (!over(p)) return kUnknown;
+  // The triangle under p is one of its bucket's, which lie between the bucket's heights.
+  const auto [i, j] = bucket(p[u], p[v]);
+  const auto& [lo, hi] = w_range_[i + nu_ * j];
+  if (lo <= hi && p[axis] > hi) return 1;
+  if (lo <= hi && p[axis] < lo) return -1;
   const Index t = locate(p);
   if (t == kNoIndex) return kUnknown;
   const auto& c = triangles[t];
