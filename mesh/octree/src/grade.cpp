@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "volmesh/core/errors.hpp"
+#include "volmesh/octree/key_map.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {
@@ -32,6 +33,8 @@ std::vector<std::uint64_t> covered_cells(const Octree& tree, int level) {
 // 2 reach + 1 cells around it) and not covered themselves: the buffer to refine.
 std::vector<GridPoint> buffer_centres(const std::vector<std::uint64_t>& covered, int level, int reach) {
   const std::int64_t size = kOctreeGrid >> level;
+  KeyMap is_covered(covered.size());  // one probe per neighbour instead of a binary search
+  for (const std::uint64_t c : covered) is_covered.insert(c, 0);
   tbb::enumerable_thread_specific<std::vector<GridPoint>> found;
   tbb::parallel_for(std::size_t{0}, covered.size(), [&](std::size_t i) {
     const GridPoint a = morton_decode(covered[i]);
@@ -44,7 +47,7 @@ std::vector<GridPoint> buffer_centres(const std::vector<std::uint64_t>& covered,
             continue;
           const GridPoint cell{static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]),
                                static_cast<std::uint32_t>(q[2])};
-          if (std::binary_search(covered.begin(), covered.end(), morton_encode(cell))) continue;
+          if (is_covered.find(morton_encode(cell)) != kNoIndex) continue;
           const std::uint32_t h = static_cast<std::uint32_t>(size / 2);
           out.push_back({cell[0] + h, cell[1] + h, cell[2] + h});
         }
