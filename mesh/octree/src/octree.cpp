@@ -66,6 +66,10 @@ void Octree::leaves_changed() {
   morton_.resize(leaves_.size());
   tbb::parallel_for(std::size_t{0}, leaves_.size(),
                     [&](std::size_t i) { morton_[i] = morton_encode(leaves_[i].anchor); });
+  index_buckets();
+}
+
+void Octree::index_buckets() {
   int bits = 0;
   while (bits < 3 * kOctreeMaxLevel && (std::size_t{1} << bits) < leaves_.size()) ++bits;
   bucket_shift_ = 3 * kOctreeMaxLevel - bits;
@@ -207,22 +211,30 @@ void Octree::split(std::span<const Index> which) {
                      "; lower the level");
   // Children occupy their parent's Morton range in child order (x bit lowest), so emitting
   // them in place keeps the Morton order.
+  // Child k's Morton code is its parent's plus k interleaved at the child's size.
   std::vector<OctreeLeaf> next;
+  std::vector<std::uint64_t> codes;
   next.reserve(count);
+  codes.reserve(count);
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
     const OctreeLeaf& c = leaves_[i];
     if (!split_leaf[i]) {
       next.push_back(c);
+      codes.push_back(morton_[i]);
       continue;
     }
     const std::uint32_t half = c.size() / 2;
-    for (int k = 0; k < 8; ++k)
+    const int shift = 3 * (kOctreeMaxLevel - c.level - 1);
+    for (int k = 0; k < 8; ++k) {
       next.push_back({{c.anchor[0] + (k & 1) * half, c.anchor[1] + (k >> 1 & 1) * half,
                        c.anchor[2] + (k >> 2 & 1) * half},
                       c.level + 1});
+      codes.push_back(morton_[i] + (std::uint64_t(k) << shift));
+    }
   }
   leaves_ = std::move(next);
-  leaves_changed();
+  morton_ = std::move(codes);
+  index_buckets();
 }
 
 }  // namespace volmesh

@@ -133,7 +133,8 @@ class Octree {
   void split(std::span<const Index> leaves);
 
  private:
-  void leaves_changed();
+  void leaves_changed();  // recomputes morton_, then index_buckets()
+  void index_buckets();
 
   Vec3 origin_;
   double root_size_;
