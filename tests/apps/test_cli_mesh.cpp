@@ -221,6 +221,32 @@ TEST(CliMesh, CellsBetweenLevelsAddsUncutCellsOnly) {
         << "region " << region;
 }
 
+// Leaves with an edge crossed twice (the ball meeting the box and the cylinder) are split
+// below --level by default; at --crossing-levels 0 none is, as in the paper's tables (7,792
+// cut cells at its level 1), and the mesh stays valid with the same regions.
+TEST(CliMesh, CrossingLevelsBoundTheDepthOfTheExtraRefinement) {
+  const fs::path dir = test::scratch_dir("mesh-crossing-levels");
+  const auto mesh = [&](const std::string& extra) {
+    const auto r = run_volmesh("mesh cutcell builtin:primitives --level 5 --json -o " +
+                                   (dir / "p.vtu").string() + extra, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto deep = mesh(""), paper = mesh(" --crossing-levels 0");
+  EXPECT_EQ(deep["crossing_levels"], 2);
+  EXPECT_EQ(deep["max_leaf_level"], 7);
+  EXPECT_EQ(paper["crossing_levels"], 0);
+  EXPECT_EQ(paper["max_leaf_level"], 5);
+  EXPECT_NEAR(paper["cut_cells"].get<double>(), 7792.0, 0.02 * 7792.0);
+  EXPECT_GT(deep["cut_cells"].get<int>(), 3 * paper["cut_cells"].get<int>() / 2);
+  EXPECT_TRUE(paper["validity"]["valid"].get<bool>());
+  EXPECT_EQ(paper["regions"].size(), deep["regions"].size());
+  for (const auto& [region, r] : deep["regions"].items())
+    EXPECT_NEAR(paper["regions"][region]["volume"].get<double>(), r["volume"].get<double>(),
+                5e-3 * r["volume"].get<double>())
+        << "region " << region;
+}
+
 TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
   const fs::path dir = test::scratch_dir("mesh-bad");
   const fs::path out = dir / "out.vtu";
@@ -260,6 +286,8 @@ TEST(CliMesh, BadUsageExitsWith2) {
         "mesh staircase builtin:ball -o x.vtu --feature-angle 20",
         "mesh cutcell builtin:ball -o x.vtu --feature-angle 0",
         "mesh cutcell builtin:ball -o x.vtu --cells-between-levels 0",
+        "mesh cutcell builtin:ball -o x.vtu --crossing-levels -1",
+        "mesh staircase builtin:ball -o x.vtu --crossing-levels 1",
         "mesh grid builtin:ball -o x.vtu --cells-between-levels 2"}) {
     const auto r = run_volmesh(args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;

@@ -1,7 +1,9 @@
 """The markdown sections of the octree validation report, from the files run.sh leaves in its
 output directory:
 
-  report.py tables OUT CASE:LEVEL,LEVEL,LEVEL ...   the paper's Tables 1 and 2 side by side
+  report.py tables OUT STEM:LEVEL,LEVEL,LEVEL ...   the paper's Tables 1 and 2 side by side
+                                                    (runs STEM-lLEVEL; STEM: the case, or
+                                                    CASE-VARIANT for other settings)
   report.py snappy OUT LEVEL SURFACE ...            snappyHexMesh against volmesh cutcell
   report.py levels OUT LEVEL LEVEL,LEVEL,... SURFACE ...
                                                     the same surfaces per level (LEVEL: the
@@ -59,22 +61,23 @@ def speedup(paper_seconds, ours):
 
 def tables(out, specs):
     for spec in specs:
-        case, levels = spec.split(":")
-        title, paper_rows = PAPER[case]
+        stem, levels = spec.split(":")
+        title, paper_rows = PAPER[stem.split("-")[0]]
         print(f"### {title}\n")
-        print("| paper level | `--level` / `--base-level` / `--cells-between-levels` | time s (paper) | time s | speed-up | CPU s "
+        print("| paper level | `--level` / `--base-level` / `--cells-between-levels` / `--crossing-levels` | time s (paper) | time s | speed-up | CPU s "
               "| speed-up (CPU) | cells (paper) | cells | ratio | cut cells (paper) | cut cells "
               "| faces (paper) | faces | vertices (paper) | vertices | octree s | cut s | total s "
               "| max leaf level |")
         print("|" + "---:|" * 20)
         uncut = []
         for paper, level in zip(paper_rows, levels.split(",")):
-            name = out / f"{case}-l{level}"
+            name = out / f"{stem}-l{level}"
             run = load_json(f"{name}.json")
             uncut.append((run["cells"] - run["cut_cells"], paper[2] - paper[3]))
             cpu = cpu_seconds(f"{name}.time")
             p_level, p_time, p_cells, p_cut, p_faces, p_vertices = paper
-            print(f"| {p_level} | {run['level']} / {run['base_level']} / {run['cells_between_levels']} | {p_time:.2f} | {run['time_seconds']:.2f} "
+            print(f"| {p_level} | {run['level']} / {run['base_level']} / {run['cells_between_levels']} "
+                  f"/ {run['crossing_levels']} | {p_time:.2f} | {run['time_seconds']:.2f} "
                   f"| {speedup(p_time, run['time_seconds'])} | {cpu:.2f} | {speedup(p_time, cpu)} "
                   f"| {p_cells:,} | {run['cells']:,} | {count_ratio(run['cells'], p_cells)} "
                   f"| {p_cut:,} | {run['cut_cells']:,} | {p_faces:,} | {run['faces']:,} "
