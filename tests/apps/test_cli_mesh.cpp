@@ -200,25 +200,36 @@ TEST(CliMesh, FeatureAngleKeepsAShallowRidge) {
   EXPECT_NEAR(angle, 15.0, 1e-9);
 }
 
+// `volmesh mesh cutcell builtin:primitives --level 5 --json` with more options: its summary.
+nlohmann::json primitives_level5(const fs::path& dir, const std::string& extra) {
+  const auto r = run_volmesh(
+      "mesh cutcell builtin:primitives --level 5 --json -o " + (dir / "p.vtu").string() + extra, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+// Every region of `a` has the volume it has in `b`, to `relative`.
+void expect_region_volumes(const nlohmann::json& a, const nlohmann::json& b, double relative) {
+  EXPECT_EQ(a["regions"].size(), b["regions"].size());
+  for (const auto& [region, r] : b["regions"].items()) {
+    const double volume = r["volume"].get<double>();
+    EXPECT_NEAR(a["regions"][region]["volume"].get<double>(), volume, relative * volume)
+        << "region " << region;
+  }
+}
+
 // The buffer cells are whole octree leaves away from the interfaces: the cut cells and so
 // the regions' volumes stay as they were.
 TEST(CliMesh, CellsBetweenLevelsAddsUncutCellsOnly) {
   const fs::path dir = test::scratch_dir("mesh-grading");
-  const auto mesh = [&](const std::string& extra) {
-    const auto r = run_volmesh("mesh cutcell builtin:primitives --level 5 --json -o " +
-                                   (dir / "p.vtu").string() + extra, dir);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return nlohmann::json::parse(r.out);
-  };
-  const auto balanced = mesh(""), graded = mesh(" --cells-between-levels 2");
+  const auto balanced = primitives_level5(dir, "");
+  const auto graded = primitives_level5(dir, " --cells-between-levels 2");
   EXPECT_EQ(balanced["cells_between_levels"], 1);
   EXPECT_EQ(graded["cells_between_levels"], 2);
   EXPECT_GT(graded["cells"].get<int>(), balanced["cells"].get<int>() + 1000);
   EXPECT_EQ(graded["cut_cells"], balanced["cut_cells"]);
   EXPECT_TRUE(graded["validity"]["valid"].get<bool>());
-  for (const auto& [region, r] : balanced["regions"].items())
-    EXPECT_NEAR(graded["regions"][region]["volume"].get<double>(), r["volume"].get<double>(), 1e-12)
-        << "region " << region;
+  expect_region_volumes(graded, balanced, 1e-12);
 }
 
 // Leaves with an edge crossed twice (the ball meeting the box and the cylinder) are split
@@ -226,25 +237,16 @@ TEST(CliMesh, CellsBetweenLevelsAddsUncutCellsOnly) {
 // cut cells at its level 1), and the mesh stays valid with the same regions.
 TEST(CliMesh, CrossingLevelsBoundTheDepthOfTheExtraRefinement) {
   const fs::path dir = test::scratch_dir("mesh-crossing-levels");
-  const auto mesh = [&](const std::string& extra) {
-    const auto r = run_volmesh("mesh cutcell builtin:primitives --level 5 --json -o " +
-                                   (dir / "p.vtu").string() + extra, dir);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return nlohmann::json::parse(r.out);
-  };
-  const auto deep = mesh(""), paper = mesh(" --crossing-levels 0");
-  EXPECT_EQ(deep["crossing_levels"], 2);
-  EXPECT_EQ(deep["max_leaf_level"], 7);
-  EXPECT_EQ(paper["crossing_levels"], 0);
-  EXPECT_EQ(paper["max_leaf_level"], 5);
-  EXPECT_NEAR(paper["cut_cells"].get<double>(), 7792.0, 0.02 * 7792.0);
-  EXPECT_GT(deep["cut_cells"].get<int>(), 3 * paper["cut_cells"].get<int>() / 2);
+  const auto paper = primitives_level5(dir, " --crossing-levels 0");
   EXPECT_TRUE(paper["validity"]["valid"].get<bool>());
-  EXPECT_EQ(paper["regions"].size(), deep["regions"].size());
-  for (const auto& [region, r] : deep["regions"].items())
-    EXPECT_NEAR(paper["regions"][region]["volume"].get<double>(), r["volume"].get<double>(),
-                5e-3 * r["volume"].get<double>())
-        << "region " << region;
+  EXPECT_NEAR(paper["cut_cells"].get<double>(), 7792.0, 0.02 * 7792.0);
+  const auto deep = primitives_level5(dir, "");
+  EXPECT_GT(deep["cut_cells"].get<int>(), 3 * paper["cut_cells"].get<int>() / 2);
+  for (const auto& [run, levels] : {std::pair{paper, 0}, std::pair{deep, 2}}) {
+    EXPECT_EQ(run["crossing_levels"], levels);
+    EXPECT_EQ(run["max_leaf_level"], 5 + levels);
+  }
+  expect_region_volumes(paper, deep, 5e-3);
 }
 
 TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {

@@ -173,8 +173,8 @@ TEST(LayeredDomain, CrossingsOfFinelyTriangulatedPlanesMatchThePlanesTo1e12) {
   m.box = kBox;
   LayerBlock b;
   for (std::size_t i = 0; i < kPlanes.size(); ++i)
-    b.horizons.push_back(graph_sheet(kBox, 2, 65, 33, [i](double x, double y) { return kPlanes[i].height(x, y); },
-                                     "p" + std::to_string(i)));
+    b.horizons.push_back(graph_sheet(
+        kBox, 2, 65, 33, [i](double x, double y) { return kPlanes[i].height(x, y); }, "p" + std::to_string(i)));
   b.labels = {1, 2, 3, 4};
   m.blocks.push_back(b);
   const LayeredDomain d(m);

@@ -69,13 +69,15 @@ for l in $LAYERS6_LEVELS; do
     --cells-between-levels "$CELLS_BETWEEN_LEVELS"
 done
 # The same at the paper's depth: no leaf split below --level for an edge crossed twice.
-for name in primitives:$PRIMITIVES_LEVELS layers6:$LAYERS6_LEVELS; do
-  for l in ${name#*:}; do
-    echo "cutcell builtin:${name%%:*} --level $l --cells-between-levels $CELLS_BETWEEN_LEVELS --crossing-levels 0"
-    cutcell "${name%%:*}-paperdepth-l$l" "builtin:${name%%:*}" "$l" "$OUT/${name%%:*}-paperdepth-l$l.vtu" \
+paper_depth() {  # case levels
+  for l in $2; do
+    echo "cutcell builtin:$1 --level $l --cells-between-levels $CELLS_BETWEEN_LEVELS --crossing-levels 0"
+    cutcell "$1-paperdepth-l$l" "builtin:$1" "$l" "$OUT/$1-paperdepth-l$l.vtu" \
       --cells-between-levels "$CELLS_BETWEEN_LEVELS" --crossing-levels 0
   done
-done
+}
+paper_depth primitives "$PRIMITIVES_LEVELS"
+paper_depth layers6 "$LAYERS6_LEVELS"
 
 for surface in $SURFACES; do
   echo "snappyHexMesh $surface (level $SNAPPY_LEVEL, $SNAPPY_BACKGROUND background cells)"

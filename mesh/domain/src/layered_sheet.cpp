@@ -204,7 +204,8 @@ void GraphSheet::build_buckets() {
   }
   for (std::size_t k = 1; k < first_.size(); ++k) first_[k] += first_[k - 1];
   members_.resize(first_.back());
-  w_range_.assign(first_.size() - 1, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  w_range_.assign(first_.size() - 1, {kInfinity, -kInfinity});
   std::vector<Index> fill(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (Index j = range[t][2]; j <= range[t][3]; ++j)
