@@ -32,7 +32,8 @@ class GraphSheet {
   bool over(const Vec3& p) const;
   // The triangles whose boxes meet the box of lo and hi, increasing, or false (and nothing)
   // when that box spans more than max_buckets buckets: a tree is faster for long segments.
-  bool triangles_near(const Vec3& lo, const Vec3& hi, std::size_t max_buckets, std::vector<Index>& out) const;
+  bool triangles_near(const Vec3& lo, const Vec3& hi, std::size_t max_buckets,
+                      std::vector<Index>& out) const;
   // Calls f(t) for the triangles t that may meet the (u, v) box of lo and hi (some twice).
   template <class F>
   void for_each_near(const Vec3& lo, const Vec3& hi, F&& f) const {
@@ -56,7 +57,7 @@ class GraphSheet {
   double scale_u_, scale_v_;            // buckets per unit length
   Index nu_, nv_;                       // buckets along u and v
   std::vector<Index> first_, members_;  // triangles of bucket (i, j): first_[i + nu_ j] ...
-  std::vector<std::array<double, 2>> w_range_;  // per bucket: the least and greatest w of its triangles
+  std::vector<std::array<double, 2>> w_range_;  // per bucket: its triangles' least and greatest w
 };
 
 // Appends a sheet to a geometry for the exact and closest-point trees: face normals, edge

@@ -1,7 +1,9 @@
-// Sheets as exact graphs over a rectangle: the checks, a bucket grid for locating the
-// triangle above a point, and the side of a point (CGAL's filtered exact predicates).
+// Sheets as exact graphs over a rectangle: the checks, a bucket grid (with each bucket's
+// height range) for locating the triangle above a point and the triangles near a segment,
+// and the side of a point (CGAL's filtered exact predicates).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -207,16 +209,18 @@ void GraphSheet::build_buckets() {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   w_range_.assign(first_.size() - 1, {kInfinity, -kInfinity});
   std::vector<Index> fill(first_.begin(), first_.end() - 1);
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& c = triangles[t];
+    const double w_lo = std::min({points[c[0]][axis], points[c[1]][axis], points[c[2]][axis]});
+    const double w_hi = std::max({points[c[0]][axis], points[c[1]][axis], points[c[2]][axis]});
     for (Index j = range[t][2]; j <= range[t][3]; ++j)
       for (Index i = range[t][0]; i <= range[t][1]; ++i) {
         members_[fill[i + nu_ * j]++] = static_cast<Index>(t);
-        for (Index c : triangles[t]) {
-          auto& [lo, hi] = w_range_[i + nu_ * j];
-          lo = std::min(lo, points[c][axis]);
-          hi = std::max(hi, points[c][axis]);
-        }
+        auto& [lo, hi] = w_range_[i + nu_ * j];
+        lo = std::min(lo, w_lo);
+        hi = std::max(hi, w_hi);
       }
+  }
 }
 
 // A triangle meeting the box has a point in it whose bucket, by the monotony of bucket(),
