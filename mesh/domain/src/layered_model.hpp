@@ -54,6 +54,7 @@ class GraphSheet {
   std::array<Index, 2> bucket(double pu, double pv) const;
 
   double u0_, v0_, u1_, v1_;            // the rectangle
+  double w0_, w1_;                      // the least and greatest w of the sheet
   double scale_u_, scale_v_;            // buckets per unit length
   Index nu_, nv_;                       // buckets along u and v
   std::vector<Index> first_, members_;  // triangles of bucket (i, j): first_[i + nu_ j] ...

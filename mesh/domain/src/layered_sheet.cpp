@@ -208,11 +208,15 @@ void GraphSheet::build_buckets() {
   members_.resize(first_.back());
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   w_range_.assign(first_.size() - 1, {kInfinity, -kInfinity});
+  w0_ = kInfinity;
+  w1_ = -kInfinity;
   std::vector<Index> fill(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& c = triangles[t];
     const double w_lo = std::min({points[c[0]][axis], points[c[1]][axis], points[c[2]][axis]});
     const double w_hi = std::max({points[c[0]][axis], points[c[1]][axis], points[c[2]][axis]});
+    w0_ = std::min(w0_, w_lo);
+    w1_ = std::max(w1_, w_hi);
     for (Index j = range[t][2]; j <= range[t][3]; ++j)
       for (Index i = range[t][0]; i <= range[t][1]; ++i) {
         members_[fill[i + nu_ * j]++] = static_cast<Index>(t);
@@ -228,6 +232,7 @@ void GraphSheet::build_buckets() {
 bool GraphSheet::triangles_near(const Vec3& lo, const Vec3& hi, std::size_t max_buckets,
                                 std::vector<Index>& out) const {
   out.clear();
+  if (hi[axis] < w0_ || lo[axis] > w1_) return true;
   const auto a = bucket(lo[u], lo[v]), b = bucket(hi[u], hi[v]);
   if (static_cast<std::size_t>(b[0] - a[0] + 1) * static_cast<std::size_t>(b[1] - a[1] + 1) > max_buckets)
     return false;
