@@ -172,7 +172,7 @@ def main():
     elif sys.argv[1] == "levels":
         levels(out, sys.argv[3], sys.argv[4], sys.argv[5:])
     else:
-        sys.exit("usage: report.py tables OUT CASE:L,L,L ... | snappy OUT LEVEL SURFACE ... "
+        sys.exit("usage: report.py tables OUT STEM:L,L,L ... | snappy OUT LEVEL SURFACE ... "
                  "| levels OUT LEVEL L,L,L SURFACE ...")
 
 

@@ -2,9 +2,17 @@
 
 #include <oneapi/tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace volmesh {
+
+double flatness(const std::vector<Vec3>& points, std::span<const Index> loop, double area) {
+  double longest = 0.0;
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    longest = std::max(longest, (points[loop[(k + 1) % loop.size()]] - points[loop[k]]).squaredNorm());
+  return longest > 0.0 ? area / longest : 0.0;
+}
 
 FaceGeometry polygon_geometry(const std::vector<Vec3>& points, std::span<const Index> loop) {
   const std::size_t n = loop.size();

@@ -143,14 +143,9 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
 
   const CellFaces cf = build_cell_faces(m);
   const MeshGeometry g = mesh_geometry(m, cf);
-  for (Index f = 0; f < m.num_faces(); ++f) {
-    const auto loop = m.face(f);
-    double longest = 0.0;
-    for (std::size_t k = 0; k < loop.size(); ++k)
-      longest = std::max(longest, (m.points[loop[(k + 1) % loop.size()]] - m.points[loop[k]]).squaredNorm());
-    if (g.faces[f].area_vector.norm() <= opt.zero_area_tolerance * longest)
+  for (Index f = 0; f < m.num_faces(); ++f)
+    if (flatness(m.points, m.face(f), g.faces[f].area_vector.norm()) <= opt.zero_area_tolerance)
       p.add(r.degenerate_faces, "face ", f, ": zero area (its vertices lie in a line)");
-  }
 
   r.min_cell_volume = m.num_cells() ? g.cells[0].volume : 0.0;
   r.max_cell_volume = r.min_cell_volume;

@@ -643,8 +643,7 @@ double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec
     const Vec3 &a = position_[face[0]], &b = position_[face[1]], &c = position_[face[2]];
     g.centre = (a + b + c) / 3.0;
     g.area_vector = 0.5 * (b - a).cross(c - a);
-    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if (g.area_vector.norm() <= kFlatTriangle * longest) return kInvertedFace;
+    if (flatness(position_, face, g.area_vector.norm()) <= kFlatTriangle) return kInvertedFace;
   } else {
     g = polygon_geometry(position_, std::vector<Index>(face.begin(), face.end()));
   }

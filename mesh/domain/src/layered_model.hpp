@@ -52,6 +52,8 @@ class GraphSheet {
  private:
   void build_buckets();
   std::array<Index, 2> bucket(double pu, double pv) const;
+  // locate() for a point over the rectangle, in its bucket cell = i + nu_ j.
+  Index locate_in(const Vec3& p, Index cell) const;
 
   double u0_, v0_, u1_, v1_;            // the rectangle
   double w0_, w1_;                      // the least and greatest w of the sheet

@@ -257,8 +257,12 @@ bool GraphSheet::triangles_near(const Vec3& lo, const Vec3& hi, std::size_t max_
 Index GraphSheet::locate(const Vec3& p) const {
   if (!over(p)) return kNoIndex;
   const auto [i, j] = bucket(p[u], p[v]);
+  return locate_in(p, i + nu_ * j);
+}
+
+Index GraphSheet::locate_in(const Vec3& p, Index cell) const {
   const Point2 q(p[u], p[v]);
-  for (Index k = first_[i + nu_ * j]; k < first_[i + nu_ * j + 1]; ++k) {
+  for (Index k = first_[cell]; k < first_[cell + 1]; ++k) {
     const auto& t = triangles[members_[k]];
     const Vec3 &x = points[t[0]], &y = points[t[1]], &z = points[t[2]];
     if (p[u] < std::min({x[u], y[u], z[u]}) || p[u] > std::max({x[u], y[u], z[u]}) ||
@@ -281,7 +285,7 @@ int GraphSheet::side(const Vec3& p) const {
   const auto& [lo, hi] = w_range_[i + nu_ * j];
   if (lo <= hi && p[axis] > hi) return 1;
   if (lo <= hi && p[axis] < lo) return -1;
-  const Index t = locate(p);
+  const Index t = locate_in(p, i + nu_ * j);
   if (t == kNoIndex) return kUnknown;
   const auto& c = triangles[t];
   const CGAL::Orientation o = CGAL::orientation(point3(points[c[0]]), point3(points[c[1]]),

@@ -18,6 +18,10 @@ struct FaceGeometry {
 FaceGeometry face_geometry(const PolyMesh& mesh, Index f);
 FaceGeometry polygon_geometry(const std::vector<Vec3>& points, std::span<const Index> loop);
 
+// A polygon's area over its longest side squared (the area given): near 0 when its vertices
+// lie in a line up to rounding, and exactly 0 when they all coincide.
+double flatness(const std::vector<Vec3>& points, std::span<const Index> loop, double area);
+
 // Whether every triangle of the fan around the loop's vertex average faces the way the whole
 // polygon does (each by more than a rounding floor): the decomposition above then covers the
 // polygon once.
