@@ -107,10 +107,13 @@ struct EdgeMemo {
   using Key = std::pair<std::uint64_t, std::uint64_t>;
   struct Entry {
     Key key;
-    EdgePoint point;
+    Index point = kNoIndex;  // into points; kNoIndex for an edge with no point (EdgePoint{})
     std::uint8_t crossings = 0;
   };
   std::vector<Entry> entries;  // sorted by key
+  // Most edges of the cut leaves join two vertices of one region and have no point: kept
+  // apart, the points do not weigh down the memo that every pass rebuilds.
+  std::vector<EdgePoint> points;
 };
 
 // Vertices with their regions (taken from `known` where it has them), the cut leaves.

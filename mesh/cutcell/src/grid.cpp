@@ -133,7 +133,7 @@ void find_edge_points(Grid& grid, EdgeMemo& memo) {
     state[e] = nominal;
     const auto it = std::lower_bound(memo.entries.begin(), memo.entries.end(), keys[e], before);
     if (it == memo.entries.end() || it->key != keys[e]) return;
-    grid.edge_point[e] = it->point;
+    if (it->point != kNoIndex) grid.edge_point[e] = memo.points[it->point];
     grid.edge_crossings[e] = it->crossings;
     state[e] = known;
   });
@@ -190,10 +190,23 @@ void find_edge_points(Grid& grid, EdgeMemo& memo) {
   }
   // Vertex numbers follow the Morton order, so the edges, sorted by their ends' numbers,
   // come sorted by their ends' codes.
+  const auto has_point = [](const EdgePoint& p) {
+    return p.exact || p.pinched != kNoIndex || p.point != Vec3::Zero() || p.normal != Vec3::Zero();
+  };
   std::vector<EdgeMemo::Entry> entries;
-  for (std::size_t e = 0; e < ne; ++e)
-    if (state[e] != moved) entries.push_back({keys[e], grid.edge_point[e], grid.edge_crossings[e]});
+  std::vector<EdgePoint> points;
+  entries.reserve(ne - static_cast<std::size_t>(std::count(state.begin(), state.end(), moved)));
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (state[e] == moved) continue;
+    Index point = kNoIndex;
+    if (has_point(grid.edge_point[e])) {
+      point = static_cast<Index>(points.size());
+      points.push_back(grid.edge_point[e]);
+    }
+    entries.push_back({keys[e], point, grid.edge_crossings[e]});
+  }
   memo.entries = std::move(entries);
+  memo.points = std::move(points);
 }
 
 std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level) {
