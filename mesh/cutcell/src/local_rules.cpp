@@ -6,6 +6,7 @@
 // finds nothing more. Each grid pass rebuilt the whole vertex table and edge list for a
 // handful of splits (seven passes on builtin:primitives at level 7, 0.6 s each).
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <map>
@@ -16,12 +17,29 @@
 namespace volmesh::cutcell {
 namespace {
 
-// Whether a leaf finer than `level` touches grid point p (the midpoint of an edge or the
-// centre of a face of a leaf of that level): p is then a corner of it, a vertex of the grid.
-bool finer_leaf_at(const Octree& tree, const GridPoint& p, int level) {
-  const LeavesAround around = leaves_around(tree, p);
-  return std::any_of(around.leaf.begin(), around.leaf.begin() + around.count,
-                     [&](Index leaf) { return tree.leaf(leaf).level > level; });
+// Whether a leaf finer than leaf l touches grid point p, a point on l's boundary (the
+// midpoint of one of its edges or the centre of one of its faces): p is then a vertex of the
+// grid. Beyond l, p touches one block of l's size per nonempty set of the boundary planes
+// through p that it steps across (three for an edge, one for a face); a block holds finer
+// leaves exactly when it is subdivided, which any one cell of it shows.
+bool finer_leaf_at(const Octree& tree, const OctreeLeaf& l, const GridPoint& p) {
+  const std::uint32_t s = l.size();
+  std::array<int, 3> plane{};  // per axis: 0 p inside l's extent, -1 on its low side, +1 high
+  for (int k = 0; k < 3; ++k) plane[k] = p[k] == l.anchor[k] ? -1 : p[k] == l.anchor[k] + s ? 1 : 0;
+  for (int across = 1; across < 8; ++across) {
+    GridPoint q = p;
+    bool valid = true;
+    for (int k = 0; k < 3 && valid; ++k) {
+      if (across >> k & 1) {  // the cell beyond the plane: below p on the low side
+        valid = plane[k] > 0 ? p[k] < kOctreeGrid : plane[k] < 0 && p[k] > 0;
+        if (plane[k] < 0) q[k] = p[k] - 1;
+      } else if (plane[k] > 0) {  // the cell on l's side
+        q[k] = p[k] - 1;
+      }
+    }
+    if (valid && tree.leaf(tree.leaf_containing(q)).level > l.level) return true;
+  }
+  return false;
 }
 
 GridPoint midpoint(const GridPoint& a, const GridPoint& b) {
@@ -44,11 +62,11 @@ LeafVertices leaf_vertices(const Octree& tree, Index i) {
   for (int c = 0; c < 8; ++c) v.corner[c] = l.corner(c);
   for (int e = 0; e < 12; ++e) {
     v.mid[e] = midpoint(v.corner[kEdgeCorners[e][0]], v.corner[kEdgeCorners[e][1]]);
-    v.has_mid[e] = finer_leaf_at(tree, v.mid[e], l.level);
+    v.has_mid[e] = finer_leaf_at(tree, l, v.mid[e]);
   }
   for (int f = 0; f < 6; ++f) {
     v.centre[f] = midpoint(v.corner[kFaceCorners[f][0]], v.corner[kFaceCorners[f][2]]);
-    v.has_centre[f] = finer_leaf_at(tree, v.centre[f], l.level);
+    v.has_centre[f] = finer_leaf_at(tree, l, v.centre[f]);
   }
   return v;
 }
@@ -240,19 +258,25 @@ std::vector<Index> new_leaves(const Octree& tree, const std::vector<OctreeLeaf>&
 
 // The new leaves and the leaves across their faces and edges.
 std::vector<Index> touched_leaves(const Octree& tree, const std::vector<Index>& fresh) {
-  std::vector<Index> out = fresh;
-  for (Index i : fresh) {
+  // At most four leaves across each face and two along each edge.
+  using Around = std::array<Index, 6 * 4 + 12 * 2>;
+  std::vector<Around> around(fresh.size());
+  tbb::parallel_for(std::size_t{0}, fresh.size(), [&](std::size_t k) {
+    Around& out = around[k];
+    out.fill(kNoIndex);
+    std::size_t n = 0;
     for (int f = 0; f < 6; ++f) {
-      const FaceNeighbours n = tree.face_neighbours(i, f);
-      for (int k = 0; k < n.count(); ++k) out.push_back(n.leaves[k]);
+      const FaceNeighbours nb = tree.face_neighbours(fresh[k], f);
+      for (int q = 0; q < nb.count(); ++q) out[n++] = nb.leaves[q];
     }
-    for (int e = 0; e < 12; ++e) {
-      const EdgeNeighbours n = tree.edge_neighbours(i, e);
-      for (Index x : n.leaves)
-        if (x != kNoIndex) out.push_back(x);
-    }
-  }
-  std::sort(out.begin(), out.end());
+    for (int e = 0; e < 12; ++e)
+      for (Index x : tree.edge_neighbours(fresh[k], e).leaves) out[n++] = x;
+  });
+  std::vector<Index> out = fresh;
+  for (const Around& a : around)
+    for (Index x : a)
+      if (x != kNoIndex) out.push_back(x);
+  tbb::parallel_sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
