@@ -1,6 +1,7 @@
 // The fine faces of the cut leaves and M3S on each face whose vertices lie in several
 // regions. A face is contoured once, from the leaf that owns it, so both sides share it.
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <numeric>
@@ -152,7 +153,8 @@ void contour_faces(Grid& grid) {
                     [&](std::size_t k) { fine_faces_of(tree, cut_leaves[k], per_leaf[k]); });
   std::vector<FineFace> faces;
   for (const auto& list : per_leaf) faces.insert(faces.end(), list.begin(), list.end());
-  std::sort(faces.begin(), faces.end(), [](const FineFace& a, const FineFace& b) {
+  // A face listed from both sides is listed alike: which copy stays does not matter.
+  tbb::parallel_sort(faces.begin(), faces.end(), [](const FineFace& a, const FineFace& b) {
     return face_code(a.leaf, a.face) < face_code(b.leaf, b.face);
   });
   faces.erase(std::unique(faces.begin(), faces.end(),
