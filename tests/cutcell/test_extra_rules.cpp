@@ -2,8 +2,12 @@
 // (split_by_extra_rules) must split exactly what repeated grid passes split.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "cut_grid.hpp"
 #include "volmesh/domain/builtin.hpp"
+#include "volmesh/domain/surface_domain.hpp"
+#include "../domain/test_surface_domain_support.hpp"
 
 namespace volmesh::cutcell {
 namespace {
@@ -45,7 +49,7 @@ TEST(ExtraRules, LocalRoundsSplitWhatGridPassesSplit) {
   memo = {};
   std::vector<Index> first = grid_selection(by_rounds, *domain, max_level, clearance, grid, memo);
   const int rounds =
-      split_by_extra_rules(by_rounds, *domain, grid.vertices, memo, std::move(first), max_level, clearance);
+      split_by_extra_rules(by_rounds, *domain, grid.vertices, memo, std::move(first), max_level, clearance).rounds;
   EXPECT_EQ(rounds, passes);
   EXPECT_TRUE(grid_selection(by_rounds, *domain, max_level, clearance, grid, memo).empty());
   ASSERT_EQ(by_rounds.num_leaves(), by_grid.num_leaves());
@@ -53,6 +57,56 @@ TEST(ExtraRules, LocalRoundsSplitWhatGridPassesSplit) {
     ASSERT_EQ(by_rounds.leaf(i).anchor, by_grid.leaf(i).anchor) << i;
     ASSERT_EQ(by_rounds.leaf(i).level, by_grid.leaf(i).level) << i;
   }
+}
+
+// refined_grid tests the rules after a split only on the leaves the split made or touched:
+// on every later grid they must select what they select among all leaves. Returns how many
+// later grids select any leaf.
+int later_selections(const Domain& domain, int level) {
+  const CutcellOptions options;
+  OctreeOptions octree;
+  octree.level = level;
+  const int max_level = octree.level + options.crossing_levels;
+  const double clearance = options.vertex_clearance, theta = options.feature_theta;
+  GridSettings settings;
+  settings.exact = settings.face.exact_points = settings.cell.exact_points = true;
+  Octree tree = build_octree(domain, octree);
+  const auto rules = [&](const Grid& grid, const LeafMask& among) {
+    std::vector<Index> out = leaves_crossed_twice(grid, max_level, among);
+    for (const std::vector<Index>& more : {leaves_thin_at_face_centres(grid, max_level, clearance, among),
+                                           leaves_hiding_features(grid, max_level, theta, among)})
+      out.insert(out.end(), more.begin(), more.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  };
+  Grid grid;
+  EdgeMemo memo;
+  std::optional<std::vector<OctreeLeaf>> touched;
+  int selections = 0;
+  for (int pass = 0; pass < 10; ++pass) {
+    grid = make_grid(tree, domain, settings, grid.vertices);
+    find_edge_points(grid, memo);
+    std::vector<Index> all = rules(grid, {});
+    if (touched) {
+      EXPECT_EQ(rules(grid, leaves_among(tree, *touched)), all) << "level " << level << ", pass " << pass;
+      selections += !all.empty();
+    }
+    if (all.empty()) break;
+    touched = split_by_extra_rules(tree, domain, grid.vertices, memo, std::move(all), max_level, clearance).touched;
+  }
+  return selections;
+}
+
+// On fandisk at level 6 the second grid's hidden-feature rule, which the local rounds do not
+// apply, selects leaves (a ridge the first splits uncovered); on builtin:primitives at level 5
+// no later grid selects any.
+TEST(ExtraRules, RulesSelectOnlyAmongTheLeavesASplitTouched) {
+  EXPECT_EQ(later_selections(*make_builtin_domain("primitives"), 5), 0);
+  auto surface = surface_test::cgal_mesh("fandisk.off");
+  if (!surface) GTEST_SKIP() << "libcgal-demo is not installed";
+  const SurfaceDomain domain({{std::move(*surface), 0, "fandisk.off"}});
+  EXPECT_GE(later_selections(domain, 6), 1);
 }
 
 }  // namespace

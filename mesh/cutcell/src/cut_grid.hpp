@@ -125,15 +125,20 @@ void classify_leaves(Grid& grid);
 // Fine edges of the cut leaves and their interface points (crossings or midpoints), taken
 // from the memo where it has them; the memo then holds this pass's.
 void find_edge_points(Grid& grid, EdgeMemo& memo);
+// The rules below test the leaves `among` marks (per leaf; every leaf when empty): after a
+// split only the leaves it made or touched can change their verdict (leaves_among).
+using LeafMask = std::vector<std::uint8_t>;
+
 // Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
 // also covers an edge of a larger leaf whose midpoint lies in another region).
-std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level);
+std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level, const LeafMask& among = {});
 
 // Cut leaves below max_level with a transition face whose centre vertex an interface passes
 // within clearance * size of, along the leaf's edge direction into the leaf: no edge of the
 // leaf runs there, so the vertex moves do not see it and the piece between would be a
 // sliver. Split, the vertex becomes a corner of edges that the moves clear.
-std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance);
+std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance,
+                                               const LeafMask& among = {});
 
 // Cut leaves below max_level whose edge points see one smooth sheet (their normals pairwise
 // within cosine theta, the feature threshold) while a crossing of the two axis segments
@@ -141,16 +146,28 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
 // normal's cosine below theta with every edge point's): a sharp edge passing through the
 // leaf without crossing its edges, which the leaf's fan would cut off (fandisk's ridge at
 // level 7). Normals oriented from the lower region into the higher.
-std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta);
+std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta,
+                                          const LeafMask& among = {});
 
 // Splits these leaves (selected by the two rules above on a grid of the tree, each below
 // max_level) and then, round by round, the leaves the rules select among those the splits
 // created or touched, evaluated from the tree and the domain (and that grid's vertices and
 // edge memo, for what they know) alone, until none is selected: the grid of the result has
 // none to select. clearance as for leaves_thin_at_face_centres (0: the first rule alone).
-// Returns the number of rounds.
-int split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
-                         const EdgeMemo& memo, std::vector<Index> leaves, int max_level, double clearance);
+struct ExtraRuleSplits {
+  int rounds = 0;
+  // The leaves the splits made and those across their faces and edges, as nodes (later
+  // splits leave some of them inside the tree): the only leaves of the result whose verdict
+  // under any of the rules above can differ from the grid's before.
+  std::vector<OctreeLeaf> touched;
+};
+ExtraRuleSplits split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
+                                     const EdgeMemo& memo, std::vector<Index> leaves, int max_level,
+                                     double clearance);
+// Splits the leaves (and what the 2:1 balance needs): ExtraRuleSplits::touched of that split.
+std::vector<OctreeLeaf> split_touching(Octree& tree, std::vector<Index> leaves);
+// Per leaf of the tree, whether it is one of the nodes.
+LeafMask leaves_among(const Octree& tree, const std::vector<OctreeLeaf>& nodes);
 
 // Past the deepest level a leaf edge may still change region twice (a layer thinner than
 // the cell): its midpoint vertex takes the region of the edge's lower corner, so that every

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "agglomerate.hpp"
@@ -21,12 +22,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Splits the listed leaves (those not at the deepest level, each once) and rebalances around them.
-void split_leaves(Octree& tree, std::vector<Index> leaves) {
+// Splits the listed leaves (those not at the deepest level, each once) and rebalances around
+// them; returns the leaves made or touched.
+std::vector<OctreeLeaf> split_leaves(Octree& tree, std::vector<Index> leaves) {
   std::erase_if(leaves, [&tree](Index i) { return tree.leaf(i).level >= kOctreeMaxLevel; });
   std::sort(leaves.begin(), leaves.end());
   leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
-  if (!leaves.empty()) split_balanced(tree, std::move(leaves));
+  return cutcell::split_touching(tree, std::move(leaves));
 }
 
 void check_options(const CutcellOptions& o) {
@@ -73,26 +75,31 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
 
   Grid grid;
   EdgeMemo memo;
+  std::optional<std::vector<OctreeLeaf>> touched;  // by the splits since the last grid
   for (;;) {
     progress("interface points", 0.2);
     grid = make_grid(tree, domain, settings, grid.vertices);
     find_edge_points(grid, memo);
-    // The rules on the whole grid; then the first two on the leaves their splits touch,
-    // until none applies, and a grid of the new tree to check (the hidden-feature rule
-    // needs the edge points of a grid).
+    // The rules on the whole first grid, on later ones where the splits since the last
+    // changed something; then the first two on the leaves their splits touch, until none
+    // applies, and a grid of the new tree to check (the hidden-feature rule needs the edge
+    // points of a grid).
+    const LeafMask among = touched ? leaves_among(tree, *touched) : LeafMask{};
     const double clearance = settings.exact ? options.vertex_clearance : 0.0;
-    std::vector<Index> split = leaves_crossed_twice(grid, crossing_level);
+    std::vector<Index> split = leaves_crossed_twice(grid, crossing_level, among);
     if (clearance > 0.0) {
-      const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance);
+      const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance, among);
       split.insert(split.end(), thin.begin(), thin.end());
     }
     if (settings.exact) {
-      const std::vector<Index> hiding = leaves_hiding_features(grid, crossing_level, options.feature_theta);
+      const std::vector<Index> hiding = leaves_hiding_features(grid, crossing_level, options.feature_theta, among);
       split.insert(split.end(), hiding.begin(), hiding.end());
     }
     if (!split.empty()) {
-      st.refinement_passes +=
+      ExtraRuleSplits splits =
           split_by_extra_rules(tree, domain, grid.vertices, memo, std::move(split), crossing_level, clearance);
+      st.refinement_passes += splits.rounds;
+      touched = std::move(splits.touched);
       continue;
     }
     st.relabelled_vertices = relabel_midpoints(grid);
@@ -111,7 +118,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     st.split_edges = static_cast<Index>(
         std::count_if(grid.split_vertex.begin(), grid.split_vertex.end(), [](Index x) { return x != kNoIndex; }));
     if (const std::vector<Index> split = leaves_for_face_points(grid, face_level); !split.empty()) {
-      split_leaves(tree, split);
+      touched = split_leaves(tree, split);
       ++st.refinement_passes;
       continue;
     }

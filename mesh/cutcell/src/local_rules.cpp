@@ -283,18 +283,36 @@ std::vector<Index> touched_leaves(const Octree& tree, const std::vector<Index>& 
 
 }  // namespace
 
-int split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
-                         const EdgeMemo& memo, std::vector<Index> leaves, int max_level, double clearance) {
+ExtraRuleSplits split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
+                                     const EdgeMemo& memo, std::vector<Index> leaves, int max_level,
+                                     double clearance) {
   Known known(vertices, memo);
   std::sort(leaves.begin(), leaves.end());
   leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
-  int rounds = 0;
+  ExtraRuleSplits out;
   while (!leaves.empty()) {
     const std::vector<OctreeLeaf> split = split_balanced(tree, std::move(leaves));
-    ++rounds;
-    leaves = selected_leaves(tree, domain, known, touched_leaves(tree, new_leaves(tree, split)), max_level, clearance);
+    ++out.rounds;
+    const std::vector<Index> touched = touched_leaves(tree, new_leaves(tree, split));
+    for (Index i : touched) out.touched.push_back(tree.leaf(i));
+    leaves = selected_leaves(tree, domain, known, touched, max_level, clearance);
   }
-  return rounds;
+  return out;
+}
+
+std::vector<OctreeLeaf> split_touching(Octree& tree, std::vector<Index> leaves) {
+  std::vector<OctreeLeaf> out;
+  if (leaves.empty()) return out;
+  for (Index i : touched_leaves(tree, new_leaves(tree, split_balanced(tree, std::move(leaves)))))
+    out.push_back(tree.leaf(i));
+  return out;
+}
+
+LeafMask leaves_among(const Octree& tree, const std::vector<OctreeLeaf>& nodes) {
+  LeafMask mask(tree.num_leaves(), 0);
+  for (const OctreeLeaf& node : nodes)
+    if (const Index i = tree.find_leaf(node.anchor, node.level); i != kNoIndex) mask[i] = 1;
+  return mask;
 }
 
 }  // namespace volmesh::cutcell
