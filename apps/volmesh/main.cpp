@@ -15,8 +15,8 @@
 namespace {
 
 // The meshers build and drop tables of tens of megabytes pass after pass. glibc hands large
-// blocks back to the system on free, so every pass paid its page faults again (a tenth of
-// a surface mesh's time); kept in the heap, they are reused.
+// blocks back to the system on free, so every pass paid its page faults again (up to a
+// tenth of a run); kept in the heap, they are reused.
 void keep_freed_memory() {
 #ifdef __GLIBC__
   mallopt(M_MMAP_THRESHOLD, 32 << 20);

@@ -128,6 +128,7 @@ void find_edge_points(Grid& grid, EdgeMemo& memo);
 // The rules below test the leaves `among` marks (per leaf; every leaf when empty): after a
 // split only the leaves it made or touched can change their verdict (leaves_among).
 using LeafMask = std::vector<std::uint8_t>;
+inline bool marked(const LeafMask& among, Index leaf) { return among.empty() || among[leaf]; }
 
 // Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
 // also covers an edge of a larger leaf whose midpoint lies in another region).

@@ -214,7 +214,7 @@ std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level, const L
   const OctreeVertices& v = grid.vertices;
   std::vector<std::uint8_t> flag(tree.num_leaves(), 0);
   tbb::parallel_for(Index{0}, tree.num_leaves(), [&](Index i) {
-    if (!grid.cut[i] || tree.leaf(i).level >= max_level || (!among.empty() && !among[i])) return;
+    if (!grid.cut[i] || tree.leaf(i).level >= max_level || !marked(among, i)) return;
     for (int e = 0; e < 12 && !flag[i]; ++e) {
       const Index a = v.leaf_corners[i][kEdgeCorners[e][0]], b = v.leaf_corners[i][kEdgeCorners[e][1]];
       const Index m = v.leaf_edge_mid[i][e];
@@ -242,7 +242,7 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
   std::vector<Vec3> from, to;
   for (Index i = 0; i < tree.num_leaves(); ++i) {
     const OctreeLeaf& l = tree.leaf(i);
-    if (!grid.cut[i] || l.level >= max_level || (!among.empty() && !among[i])) continue;
+    if (!grid.cut[i] || l.level >= max_level || !marked(among, i)) continue;
     for (int f = 0; f < 6; ++f) {
       if (const Index centre = v.leaf_face_centre[i][f]; centre != kNoIndex) {
         owner.push_back(i);
@@ -302,7 +302,7 @@ std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, doubl
   // elsewhere the leaf's feature points and splits already follow the bends its edges show.
   std::vector<Index> candidates;
   for (Index i = 0; i < tree.num_leaves(); ++i)
-    if (grid.cut[i] && tree.leaf(i).level < max_level && (among.empty() || among[i])) candidates.push_back(i);
+    if (grid.cut[i] && tree.leaf(i).level < max_level && marked(among, i)) candidates.push_back(i);
   std::vector<std::vector<Vec3>> normals(candidates.size());
   tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t k) {
     edge_point_normals(grid, candidates[k], normals[k]);
