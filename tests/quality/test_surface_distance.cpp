@@ -9,6 +9,21 @@
 namespace volmesh {
 namespace {
 
+// "At once": a subdivision down to the error bound would take hours. The measurement takes
+// 0.3 s in a Release build and 4.6 s under AddressSanitizer (CI's second run), too close to
+// a 5 s limit on a loaded machine.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kAtOnceSeconds = 60.0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr double kAtOnceSeconds = 60.0;
+#else
+constexpr double kAtOnceSeconds = 5.0;
+#endif
+#else
+constexpr double kAtOnceSeconds = 5.0;
+#endif
+
 // The unit square in z = 0 as an n × n grid of squares, each cut along the diagonal from
 // (i, j) to (i+1, j+1); `hole` squares left out (by index j * n + i).
 TriSurface square_grid(int n, std::vector<int> holes = {}) {
@@ -42,7 +57,7 @@ TEST(SurfaceDistance, CoincidingPlanarTriangulationsAreAtDistanceZeroAtOnce) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(d.from_a, 1e-15);
   EXPECT_LT(d.from_b, 1e-15);
-  EXPECT_LT(seconds, 5.0);
+  EXPECT_LT(seconds, kAtOnceSeconds);
 }
 
 // The same with the grid's points off the plane by up to a tenth of the bound, as rounding
@@ -55,7 +70,7 @@ TEST(SurfaceDistance, NearlyCoincidingPlanarTriangulationsAreMeasuredAtOnce) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LE(d.from_a, 1e-10);
   EXPECT_LE(d.from_b, 1e-10);
-  EXPECT_LT(seconds, 5.0);
+  EXPECT_LT(seconds, kAtOnceSeconds);
 }
 
 // A hole in the grid is not covered: the square's points over it are as far from the grid as
