@@ -12,14 +12,8 @@ namespace {
 // "At once": a subdivision down to the error bound would take hours. The measurement takes
 // 0.3 s in a Release build and 4.6 s under AddressSanitizer (CI's second run), too close to
 // a 5 s limit on a loaded machine.
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef __SANITIZE_ADDRESS__
 constexpr double kAtOnceSeconds = 60.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double kAtOnceSeconds = 60.0;
-#else
-constexpr double kAtOnceSeconds = 5.0;
-#endif
 #else
 constexpr double kAtOnceSeconds = 5.0;
 #endif
