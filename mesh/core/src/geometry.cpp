@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace volmesh {
 
@@ -108,9 +109,14 @@ CellGeometry cell_geometry(const PolyMesh& mesh, std::span<const Index> faces, I
 
 // Both cores; each face and cell on its own, so the result does not depend on the split.
 MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces) {
+  std::vector<FaceGeometry> faces(mesh.num_faces());
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) { faces[f] = face_geometry(mesh, f); });
+  return mesh_geometry(mesh, cell_faces, std::move(faces));
+}
+
+MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces, std::vector<FaceGeometry> faces) {
   MeshGeometry g;
-  g.faces.resize(mesh.num_faces());
-  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) { g.faces[f] = face_geometry(mesh, f); });
+  g.faces = std::move(faces);
   g.cells.resize(mesh.num_cells());
   tbb::parallel_for(Index{0}, mesh.num_cells(),
                     [&](Index c) { g.cells[c] = cell_geometry(mesh, cell_faces.of(c), c, g.faces); });

@@ -36,6 +36,8 @@ class Agglomerator {
     limits_ = {options.skewness_limit, options.max_non_orthogonality};
   }
   AgglomerationStats run();
+  // The faces' geometry, of the rebuilt mesh once run() has rebuilt it.
+  std::vector<FaceGeometry> take_face_geometry() { return std::move(face_); }
 
  private:
   // checkMesh's verdict on a face (face_metrics.hpp): above 1 where it would complain.
@@ -325,15 +327,19 @@ void Agglomerator::rebuild() {
     }
   out.tag_names = mesh_.tag_names;
   std::vector<Index> renumbered;
+  std::vector<FaceGeometry> geometry;
+  geometry.reserve(faces);
   for (Index f = 0; f < mesh_.num_faces(); ++f) {
     if (!face_alive_[f]) continue;
     renumbered.clear();
     for (Index v : loop(f)) renumbered.push_back(point_id[v]);
     const Index n = mesh_.neighbour[f];
     out.add_face(renumbered, cell_id[mesh_.owner[f]], n == kNoIndex ? kNoIndex : cell_id[n], mesh_.face_tag[f]);
+    geometry.push_back(face_[f]);
   }
   mesh_ = std::move(out);
   size_ = std::move(sizes);
+  face_ = std::move(geometry);
 }
 
 AgglomerationStats Agglomerator::run() {
@@ -384,8 +390,11 @@ AgglomerationStats Agglomerator::run() {
 }  // namespace
 
 AgglomerationStats agglomerate(PolyMesh& mesh, std::vector<double>& cell_size,
-                               const AgglomerationOptions& options) {
-  return Agglomerator(mesh, cell_size, options).run();
+                               const AgglomerationOptions& options, std::vector<FaceGeometry>& face_geometry) {
+  Agglomerator merging(mesh, cell_size, options);
+  const AgglomerationStats stats = merging.run();
+  face_geometry = merging.take_face_geometry();
+  return stats;
 }
 
 }  // namespace volmesh::cutcell

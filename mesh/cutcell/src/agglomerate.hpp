@@ -13,6 +13,7 @@
 // 1.5e-4 relative at level 3, 2e-5 at level 5, well below the discretisation error).
 #include <vector>
 
+#include "volmesh/core/geometry.hpp"
 #include "volmesh/core/poly_mesh.hpp"
 
 namespace volmesh::cutcell {
@@ -31,8 +32,9 @@ struct AgglomerationStats {
 };
 
 // Joins faces and merges cells of `mesh` (cell_size: the edge of each cell's leaf, kept in step). A merged
-// cell keeps the larger cell's size.
+// cell keeps the larger cell's size. face_geometry is set to the result's (face_geometry of
+// each face), which the merging has computed.
 AgglomerationStats agglomerate(PolyMesh& mesh, std::vector<double>& cell_size,
-                               const AgglomerationOptions& options);
+                               const AgglomerationOptions& options, std::vector<FaceGeometry>& face_geometry);
 
 }  // namespace volmesh::cutcell

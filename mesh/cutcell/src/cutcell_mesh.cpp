@@ -177,6 +177,7 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
 
   std::vector<double> cell_size(mesh.num_cells());
   for (Index c = 0; c < mesh.num_cells(); ++c) cell_size[c] = tree.cell_size(tree.leaf(assembly.cell_leaf[c]).level);
+  std::vector<FaceGeometry> face_geometry;  // the merging's, for the figures below
   if (options.merge_rounds > 0) {
     progress("merging", 0.9);
     AgglomerationOptions merging;
@@ -184,14 +185,16 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
     merging.min_volume_ratio = options.merge_volume_ratio;
     merging.rounds = options.merge_rounds;
     st.split_cells = split_reflex_cells(mesh, cell_size, {merging.skewness_limit, merging.max_non_orthogonality});
-    const AgglomerationStats merged = agglomerate(mesh, cell_size, merging);
+    const AgglomerationStats merged = agglomerate(mesh, cell_size, merging, face_geometry);
     st.merged_cells = merged.merged;
     st.joined_faces = merged.joined;
     st.bad_faces = merged.bad_faces;
   }
 
   // Smallest cell relative to its leaf, and checkMesh's measures.
-  const MeshGeometry geometry = mesh_geometry(mesh, build_cell_faces(mesh));
+  const CellFaces cell_faces = build_cell_faces(mesh);
+  const MeshGeometry geometry = face_geometry.empty() ? mesh_geometry(mesh, cell_faces)
+                                                      : mesh_geometry(mesh, cell_faces, std::move(face_geometry));
   double ratio = std::numeric_limits<double>::infinity();
   for (Index c = 0; c < mesh.num_cells(); ++c)
     ratio = std::min(ratio, geometry.cells[c].volume / std::pow(cell_size[c], 3));

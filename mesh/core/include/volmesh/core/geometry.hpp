@@ -65,6 +65,8 @@ struct MeshGeometry {
   std::vector<CellGeometry> cells;
 };
 MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces);
+// The same with the faces' geometry known (face_geometry of each face).
+MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces, std::vector<FaceGeometry> faces);
 
 // Signed volume of the tetrahedron (a, b, c, d): positive when det(b-a, c-a, d-a) > 0.
 inline double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
