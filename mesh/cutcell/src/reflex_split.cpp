@@ -115,7 +115,7 @@ class ReflexSplitter {
   double split_worst(Index c, const Split& s);
   void insert_on_edge(Index c, Index a, Index b, Index m);
   void commit(Index c, const Split& s);
-  PolyMesh rebuild() const;
+  PolyMesh rebuild();
 
   PolyMesh& mesh_;
   const Index base_faces_, base_cells_;
@@ -442,12 +442,21 @@ Index ReflexSplitter::run() {
   return splits;
 }
 
-PolyMesh ReflexSplitter::rebuild() const {
+// The split mesh; the points move into it.
+PolyMesh ReflexSplitter::rebuild() {
+  const auto faces = static_cast<Index>(owner_.size());
+  std::size_t corners = 0;
+  for (Index f = 0; f < faces; ++f) corners += loop(f).size();
   PolyMesh out;
-  out.points = mesh_.points;
+  out.face_offsets.reserve(faces + 1);
+  out.face_vertices.reserve(corners);
+  out.owner.reserve(faces);
+  out.neighbour.reserve(faces);
+  out.face_tag.reserve(faces);
+  for (Index f = 0; f < faces; ++f) out.add_face(loop(f), owner_[f], neighbour_[f], tag_[f]);
+  out.points = std::move(mesh_.points);
   out.cell_region = region_;
   out.tag_names = mesh_.tag_names;
-  for (Index f = 0; f < static_cast<Index>(owner_.size()); ++f) out.add_face(loop(f), owner_[f], neighbour_[f], tag_[f]);
   return out;
 }
 
