@@ -4,6 +4,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <span>
 
 #include "assemble.hpp"
@@ -47,7 +48,7 @@ class Assembler {
     const Index c = cut_of_[leaf];
     if (c == kNoIndex) return first_cell_[leaf] < first_cell_[leaf + 1] ? first_cell_[leaf] : kNoIndex;
     const int piece = cuts_[c].split.polygon_piece[cuts_[c].slot_polygons[slot] + polygon];
-    return piece_cell_[c][piece];
+    return piece_cell_[first_piece_[c] + piece];
   }
   Vec3 position(PointKey key) const;
   PointKey leaf_point(Index cut, int local) const {
@@ -63,7 +64,8 @@ class Assembler {
   const std::vector<LeafCut>& cuts_;
   const std::vector<Index>& cut_of_;
   std::vector<Index> first_cell_;               // per leaf, plus the total
-  std::vector<std::vector<Index>> piece_cell_;  // per cut leaf and piece; kNoIndex for region 0
+  // Per cut leaf its pieces' cells, from first_piece_[cut]; kNoIndex for region 0.
+  std::vector<Index> first_piece_, piece_cell_;
   std::vector<std::int64_t> first_new_point_;   // per cut leaf
   std::vector<Vec3> new_points_;
 };
@@ -131,8 +133,8 @@ void Assembler::emit_leaf(Index leaf, FaceBlock& out) const {
     FaceOut& o = out.begin_face();
     for (int p : points) out.keys.push_back(leaf_point(c, p));
     out.end_face();
-    o.owner = piece_cell_[c][higher];
-    o.neighbour = piece_cell_[c][lower];
+    o.owner = piece_cell_[first_piece_[c] + higher];
+    o.neighbour = piece_cell_[first_piece_[c] + lower];
     if (o.neighbour == kNoIndex) {
       o.surface = true;
       for (PointKey k : out.loop(o)) o.centre += position(k) / static_cast<double>(o.size);
@@ -146,8 +148,15 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   const Index leaves = tree_.num_leaves();
   // Cells: a whole leaf in a region, or the pieces of a cut leaf outside region 0.
   first_cell_.assign(leaves + 1, 0);
-  piece_cell_.resize(cuts_.size());
+  first_piece_.assign(cuts_.size() + 1, 0);
   first_new_point_.assign(cuts_.size(), 0);
+  std::size_t pieces = 0, made = 0;
+  for (const LeafCut& cut : cuts_) {
+    pieces += cut.split.pieces.size();
+    made += cut.split.new_points.size();
+  }
+  piece_cell_.reserve(pieces);
+  new_points_.reserve(made);
   std::vector<Index> cell_region;
   std::vector<Index> cell_leaf;
   std::int64_t new_points = 0;
@@ -166,12 +175,13 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
     first_new_point_[c] = new_points;
     new_points += static_cast<std::int64_t>(split.new_points.size());
     new_points_.insert(new_points_.end(), split.new_points.begin(), split.new_points.end());
+    first_piece_[c] = static_cast<Index>(piece_cell_.size());
     for (const CellPiece& piece : split.pieces) {
       if (piece.region == 0) {
-        piece_cell_[c].push_back(kNoIndex);
+        piece_cell_.push_back(kNoIndex);
         continue;
       }
-      piece_cell_[c].push_back(static_cast<Index>(cell_region.size()));
+      piece_cell_.push_back(static_cast<Index>(cell_region.size()));
       cell_region.push_back(piece.region);
       cell_leaf.push_back(i);
       ++stats.cut_cells;
@@ -180,6 +190,7 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
       throw InputError("cutcell: more cells than the index limit; lower the level");
   }
   first_cell_[leaves] = static_cast<Index>(cell_region.size());
+  first_piece_[cuts_.size()] = static_cast<Index>(piece_cell_.size());
 
   const Index blocks = (leaves + kBlock - 1) / kBlock;
   std::vector<FaceBlock> faces(blocks);
@@ -190,14 +201,21 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   // Points in use, numbered by kind and then by key.
   std::vector<std::uint8_t> used_vertex(grid_.position.size(), 0), used_edge(grid_.edges.size(), 0),
       used_face(grid_.faces.size(), 0), used_new(new_points_.size(), 0);
-  for (const FaceBlock& block : faces)
-    for (PointKey k : block.keys) {
-      if (k < kEdgeKey) used_vertex[k] = 1;
-      else if (k < kFaceKey) used_edge[k - kEdgeKey] = 1;
-      else if (k < kCellKey) used_face[k - kFaceKey] = 1;
-      else used_new[k - kCellKey] = 1;
+  tbb::parallel_for(Index{0}, blocks, [&](Index b) {
+    // Blocks share points: every store is of the same 1.
+    const auto use = [](std::uint8_t& flag) { std::atomic_ref<std::uint8_t>(flag).store(1, std::memory_order_relaxed); };
+    for (PointKey k : faces[b].keys) {
+      if (k < kEdgeKey) use(used_vertex[k]);
+      else if (k < kFaceKey) use(used_edge[k - kEdgeKey]);
+      else if (k < kCellKey) use(used_face[k - kFaceKey]);
+      else use(used_new[k - kCellKey]);
     }
+  });
   PolyMesh mesh;
+  std::size_t used = 0;
+  for (const auto* flags : {&used_vertex, &used_edge, &used_face, &used_new})
+    used += static_cast<std::size_t>(std::count(flags->begin(), flags->end(), 1));
+  mesh.points.reserve(used);
   std::vector<Index> vertex_id(used_vertex.size(), kNoIndex), edge_id(used_edge.size(), kNoIndex),
       face_id(used_face.size(), kNoIndex), new_id(used_new.size(), kNoIndex);
   const auto number = [&mesh](const std::vector<std::uint8_t>& used, std::vector<Index>& id, auto pos) {
@@ -227,22 +245,39 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
       if (o.surface) names[b].push_back(grid_.domain->boundary_name(o.centre));
   });
   mesh.cell_region = std::move(cell_region);
-  std::vector<Index> loop;
+  // Tags in order of first use, then the faces written on both cores, each block at its place.
+  std::vector<std::vector<Index>> tags(blocks);
+  std::vector<std::size_t> first_face(blocks + 1, 0), first_key(blocks + 1, 0);
   for (Index b = 0; b < blocks; ++b) {
     std::size_t named = 0;
     for (const FaceOut& o : faces[b].faces) {
-      loop.clear();
-      for (PointKey k : faces[b].loop(o)) loop.push_back(point_id(k));
-      Index tag = kNoIndex;
-      if (o.neighbour == kNoIndex) {
-        const std::string name = o.surface ? names[b][named++] : std::string();
-        tag = mesh.tag_index(name.empty() ? "boundary" : name);
-      }
-      if (mesh.face_vertices.size() + loop.size() > static_cast<std::size_t>(kMaxIndex))
-        throw InputError("cutcell: more face vertices than the index limit; lower the level");
-      mesh.add_face(loop, o.owner, o.neighbour, tag);
+      if (o.neighbour != kNoIndex) continue;
+      const std::string& name = o.surface ? names[b][named++] : std::string();
+      tags[b].push_back(mesh.tag_index(name.empty() ? "boundary" : name));
     }
+    first_face[b + 1] = first_face[b] + faces[b].faces.size();
+    first_key[b + 1] = first_key[b] + faces[b].keys.size();
   }
+  if (first_key[blocks] > static_cast<std::size_t>(kMaxIndex))
+    throw InputError("cutcell: more face vertices than the index limit; lower the level");
+  const std::size_t total = first_face[blocks];
+  mesh.face_offsets.resize(total + 1);
+  mesh.face_offsets[total] = static_cast<Index>(first_key[blocks]);
+  mesh.face_vertices.resize(first_key[blocks]);
+  mesh.owner.resize(total);
+  mesh.neighbour.resize(total);
+  mesh.face_tag.resize(total);
+  tbb::parallel_for(Index{0}, blocks, [&](Index b) {
+    std::size_t f = first_face[b], key = first_key[b], tagged = 0;
+    for (const FaceOut& o : faces[b].faces) {
+      mesh.face_offsets[f] = static_cast<Index>(key);
+      for (PointKey k : faces[b].loop(o)) mesh.face_vertices[key++] = point_id(k);
+      mesh.owner[f] = o.owner;
+      mesh.neighbour[f] = o.neighbour;
+      mesh.face_tag[f] = o.neighbour == kNoIndex ? tags[b][tagged++] : kNoIndex;
+      ++f;
+    }
+  });
   stats.cell_leaf = std::move(cell_leaf);
   return mesh;
 }
