@@ -87,6 +87,18 @@ TEST(CutcellQuality, PrimitivesJunctionsLeaveNoThinCellsAndFewRejectedFaces) {
   EXPECT_EQ(stats.bad_faces, 0);
 }
 
+// Where the pinched-out layer meets the fault, a cell of one region and one of another are
+// bent into each other, each one's centre behind a face they share, and neither split alone
+// helps: split together, level 4 passes (it had three faces beyond the limits). One face
+// there has a centre on its plane to within rounding, which checkMesh (and bad_faces) accept.
+TEST(CutcellQuality, Layers6Level4PassesCheckMeshLimits) {
+  CutcellStats stats;
+  const PolyMesh mesh = mesh_of("layers6", 4, stats);
+  const Rejected r = rejected_faces(mesh);
+  EXPECT_EQ(r.skewed + r.non_orthogonal, 0) << r.skewed << " skewed, " << r.non_orthogonal << " non-orthogonal";
+  EXPECT_EQ(stats.bad_faces, 0);
+}
+
 // Where layers end on the box, the splitter's last resort for a skewed face and the merging's
 // face joins used to make polygons folded over themselves (levels 4 and 5, near the box face
 // x = 0), and the polyhedral FEM refused the mesh. A merged polygon is now kept only when

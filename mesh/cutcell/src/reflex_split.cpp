@@ -59,6 +59,7 @@ class ReflexSplitter {
     return mesh_.face(f);
   }
   void set_loop(Index f, std::vector<Index> l) {
+    if (journal_) journal_->loops.emplace_back(f, saved(f, base_faces_, new_loops_, changed_loops_));
     if (f >= base_faces_) new_loops_[f - base_faces_] = std::move(l);
     else changed_loops_[f] = std::move(l);
   }
@@ -68,6 +69,7 @@ class ReflexSplitter {
     return base_cell_faces_.of(c);
   }
   std::vector<Index>& mutable_faces_of(Index c) {
+    if (journal_) journal_->cell_faces.emplace_back(c, saved(c, base_cells_, new_cell_faces_, changed_cells_));
     if (c >= base_cells_) return new_cell_faces_[c - base_cells_];
     const auto [it, fresh] = changed_cells_.try_emplace(c);
     if (fresh) it->second.assign(base_cell_faces_.of(c).begin(), base_cell_faces_.of(c).end());
@@ -116,6 +118,23 @@ class ReflexSplitter {
   void insert_on_edge(Index c, Index a, Index b, Index m);
   void commit(Index c, const Split& s);
   PolyMesh rebuild();
+  Index split_with_neighbours(Index c);
+
+  // What a tentative chain of splits changed, to undo it: the sizes before and the entries
+  // before they were changed (nullopt: a base face's or cell's own, absent from the maps).
+  using Saved = std::optional<std::vector<Index>>;
+  struct Journal {
+    std::size_t points, cells, faces;
+    std::vector<std::pair<Index, Saved>> loops, cell_faces;
+    std::vector<std::array<Index, 3>> sides;  // face, owner, neighbour
+  };
+  static Saved saved(Index i, Index base, const std::vector<std::vector<Index>>& added,
+                     const std::unordered_map<Index, std::vector<Index>>& changed) {
+    if (i >= base) return added[i - base];
+    if (const auto it = changed.find(i); it != changed.end()) return it->second;
+    return std::nullopt;
+  }
+  void undo(const Journal& j);
 
   PolyMesh& mesh_;
   const Index base_faces_, base_cells_;
@@ -127,6 +146,7 @@ class ReflexSplitter {
   std::vector<Index> owner_, neighbour_, tag_, region_;
   std::vector<Vec3> centre_;
   std::vector<char> centre_known_;
+  Journal* journal_ = nullptr;
 };
 
 // Volume and centre as checkMesh computes them, from the faces' loops out of the cell.
@@ -308,7 +328,8 @@ double ReflexSplitter::split_worst(Index c, const Split& s) {
   double w = std::numeric_limits<double>::infinity();
   const double floor = 1e-3 * std::pow(size_[c], 3);
   const CellGeometry a = geometry(parts[kNegative]), b = geometry(parts[kPositive]);
-  if (a.volume > floor && b.volume > floor) {
+  // A part of three faces would be a closed fold of no volume, not a cell.
+  if (a.volume > floor && b.volume > floor && parts[0].size() > 3 && parts[1].size() > 3) {
     const std::array<Vec3, 2> centre{a.centre, b.centre};
     w = 0.0;
     for (const Split::Face& f : s.faces) {
@@ -402,6 +423,7 @@ void ReflexSplitter::commit(Index c, const Split& s) {
       faces_b.push_back(g);
       if (const Index o = other(g, part_b); o != kNoIndex) mutable_faces_of(o).push_back(g);
     } else {
+      if (journal_) journal_->sides.push_back({f, owner_[f], neighbour_[f]});
       (owner_[f] == c ? owner_[f] : neighbour_[f]) = part_b;
       faces_b.push_back(f);
     }
@@ -418,6 +440,7 @@ Index ReflexSplitter::run() {
     for (Index c = r.begin(); c != r.end(); ++c) reflex[c] = !reflex_planes(c).empty();
   });
   Index splits = 0;
+  std::vector<Index> left;  // rejected cells no split of their own leaves as checkMesh wants
   for (Index c = 0; c < base_cells_; ++c) {
     if (!reflex[c]) continue;
     const std::vector<Plane> planes = reflex_planes(c);
@@ -434,12 +457,108 @@ Index ReflexSplitter::run() {
         best = std::move(s);
       }
     }
-    if (!best) continue;
+    if (!best) {
+      left.push_back(c);
+      continue;
+    }
     commit(c, *best);
     ++splits;
   }
+  for (Index c : left) splits += split_with_neighbours(c);
   if (splits > 0) mesh_ = rebuild();
   return splits;
+}
+
+// Two cells of different regions bent into each other: each one's centre lies behind a
+// face they share (layers6, where a pinched-out layer meets the fault), so a split of either
+// alone still leaves the face rejected, by the other side. c is split where that lowers its
+// worst face, then in turn each cell across a face the split leaves rejected, and the
+// splits are kept only when none of their parts' faces is rejected. Where c is rejected only
+// across faces between regions, which no merge can take away, the splits are also kept when
+// they leave no inverted pyramid: a skewed face is left to the merging. Otherwise all of
+// them are undone. Returns the number of splits kept.
+Index ReflexSplitter::split_with_neighbours(Index c) {
+  const auto rejected = [&](Index f, Index x) {
+    const Index o = other(f, x);
+    return badness(outward(f, x), centre(x), o == kNoIndex ? nullptr : &centre(o)) > 1.0;
+  };
+  if (worst(c) <= 1.0) return 0;
+  bool interfaces_only = true;
+  for (Index f : faces_of(c))
+    if (rejected(f, c) && (other(f, c) == kNoIndex || region_[other(f, c)] == region_[c])) interfaces_only = false;
+  Journal journal{mesh_.points.size(), region_.size(), owner_.size(), {}, {}, {}};
+  journal_ = &journal;
+  std::vector<Index> queue{c}, parts;
+  // A few splits at most: the cells bent into each other come in pairs.
+  for (std::size_t next = 0; next < queue.size() && parts.size() < 8; ++next) {
+    const Index x = queue[next];
+    double best_worst = worst(x);
+    if (best_worst <= 1.0) continue;
+    std::optional<Split> best;
+    for (const Plane& p : reflex_planes(x)) {
+      std::optional<Split> s = split(x, p);
+      if (!s) continue;
+      if (const double w = split_worst(x, *s); w < best_worst) {
+        best_worst = w;
+        best = std::move(s);
+      }
+    }
+    if (!best) continue;
+    commit(x, *best);
+    const Index part_b = static_cast<Index>(region_.size()) - 1;
+    for (const Index y : {x, part_b}) {
+      parts.push_back(y);
+      for (Index f : faces_of(y))
+        if (const Index o = other(f, y); o != kNoIndex && rejected(f, y) &&
+                                         std::find(queue.begin(), queue.end(), o) == queue.end())
+          queue.push_back(o);
+    }
+  }
+  journal_ = nullptr;
+  double after = 0.0;
+  for (Index y : parts) after = std::max(after, worst(y));
+  if (!parts.empty() && (after <= 1.0 || (interfaces_only && after < kInvertedFace)))
+    return static_cast<Index>(parts.size() / 2);
+  undo(journal);
+  return 0;
+}
+
+void ReflexSplitter::undo(const Journal& j) {
+  const Index faces = static_cast<Index>(j.faces), cells = static_cast<Index>(j.cells);
+  for (auto it = j.loops.rbegin(); it != j.loops.rend(); ++it) {
+    const auto& [f, loop] = *it;
+    if (f >= faces) continue;
+    if (f >= base_faces_) new_loops_[f - base_faces_] = *loop;
+    else if (loop) changed_loops_[f] = *loop;
+    else changed_loops_.erase(f);
+  }
+  for (auto it = j.cell_faces.rbegin(); it != j.cell_faces.rend(); ++it) {
+    const auto& [c, list] = *it;
+    if (c >= cells) continue;
+    if (c >= base_cells_) new_cell_faces_[c - base_cells_] = *list;
+    else if (list) changed_cells_[c] = *list;
+    else changed_cells_.erase(c);
+    centre_known_[c] = 0;
+  }
+  for (auto it = j.sides.rbegin(); it != j.sides.rend(); ++it) {
+    owner_[(*it)[0]] = (*it)[1];
+    neighbour_[(*it)[0]] = (*it)[2];
+  }
+  mesh_.points.resize(j.points);
+  new_loops_.resize(j.faces - base_faces_);
+  owner_.resize(j.faces);
+  neighbour_.resize(j.faces);
+  tag_.resize(j.faces);
+  new_cell_faces_.resize(j.cells - base_cells_);
+  region_.resize(j.cells);
+  size_.resize(j.cells);
+  centre_.resize(j.cells);
+  centre_known_.resize(j.cells);
+  // The cells on a restored face had their centres taken with the point the chain put on it.
+  for (const auto& [f, loop] : j.loops)
+    if (f < faces)
+      for (const Index c : {owner_[f], neighbour_[f]})
+        if (c != kNoIndex && c < cells) centre_known_[c] = 0;
 }
 
 // The split mesh; the points move into it.
