@@ -134,6 +134,17 @@ class ReflexSplitter {
     if (const auto it = changed.find(i); it != changed.end()) return it->second;
     return std::nullopt;
   }
+  // Puts back what saved() kept, latest change first; items made since (end on) go with them.
+  static void restore(const std::vector<std::pair<Index, Saved>>& entries, Index end, Index base,
+                      std::vector<std::vector<Index>>& added, std::unordered_map<Index, std::vector<Index>>& changed) {
+    for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
+      const auto& [i, value] = *it;
+      if (i >= end) continue;
+      if (i >= base) added[i - base] = *value;
+      else if (value) changed[i] = *value;
+      else changed.erase(i);
+    }
+  }
   void undo(const Journal& j);
 
   PolyMesh& mesh_;
@@ -525,21 +536,8 @@ Index ReflexSplitter::split_with_neighbours(Index c) {
 
 void ReflexSplitter::undo(const Journal& j) {
   const Index faces = static_cast<Index>(j.faces), cells = static_cast<Index>(j.cells);
-  for (auto it = j.loops.rbegin(); it != j.loops.rend(); ++it) {
-    const auto& [f, loop] = *it;
-    if (f >= faces) continue;
-    if (f >= base_faces_) new_loops_[f - base_faces_] = *loop;
-    else if (loop) changed_loops_[f] = *loop;
-    else changed_loops_.erase(f);
-  }
-  for (auto it = j.cell_faces.rbegin(); it != j.cell_faces.rend(); ++it) {
-    const auto& [c, list] = *it;
-    if (c >= cells) continue;
-    if (c >= base_cells_) new_cell_faces_[c - base_cells_] = *list;
-    else if (list) changed_cells_[c] = *list;
-    else changed_cells_.erase(c);
-    centre_known_[c] = 0;
-  }
+  restore(j.loops, faces, base_faces_, new_loops_, changed_loops_);
+  restore(j.cell_faces, cells, base_cells_, new_cell_faces_, changed_cells_);
   for (auto it = j.sides.rbegin(); it != j.sides.rend(); ++it) {
     owner_[(*it)[0]] = (*it)[1];
     neighbour_[(*it)[0]] = (*it)[2];
@@ -554,7 +552,10 @@ void ReflexSplitter::undo(const Journal& j) {
   size_.resize(j.cells);
   centre_.resize(j.cells);
   centre_known_.resize(j.cells);
-  // The cells on a restored face had their centres taken with the point the chain put on it.
+  // The restored cells, and those on a restored face (their centres were taken with the
+  // point the chain put on it), need their centres again.
+  for (const auto& [c, list] : j.cell_faces)
+    if (c < cells) centre_known_[c] = 0;
   for (const auto& [f, loop] : j.loops)
     if (f < faces)
       for (const Index c : {owner_[f], neighbour_[f]})
