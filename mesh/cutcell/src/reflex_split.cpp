@@ -115,6 +115,7 @@ class ReflexSplitter {
   std::vector<Plane> reflex_planes(Index c) const;
   std::optional<Split> split(Index c, const Plane& plane);
   double split_worst(Index c, const Split& s);
+  std::optional<Split> best_split(Index c, const std::vector<Plane>& planes, double below);
   void insert_on_edge(Index c, Index a, Index b, Index m);
   void commit(Index c, const Split& s);
   PolyMesh rebuild();
@@ -443,6 +444,20 @@ void ReflexSplitter::commit(Index c, const Split& s) {
   new_cell_faces_.back() = std::move(faces_b);
 }
 
+// The split of c along one of the planes whose parts' worst face scores lowest, below `below`.
+std::optional<Split> ReflexSplitter::best_split(Index c, const std::vector<Plane>& planes, double below) {
+  std::optional<Split> best;
+  for (const Plane& p : planes) {
+    std::optional<Split> s = split(c, p);
+    if (!s) continue;
+    if (const double w = split_worst(c, *s); w < below) {
+      below = w;
+      best = std::move(s);
+    }
+  }
+  return best;
+}
+
 Index ReflexSplitter::run() {
   // The cells with a reflex edge, found on both cores; a split changes only its cell's
   // faces and points on the faces around, so the cells are then taken in order.
@@ -456,18 +471,9 @@ Index ReflexSplitter::run() {
     if (!reflex[c]) continue;
     const std::vector<Plane> planes = reflex_planes(c);
     if (planes.empty() || worst(c) <= 1.0) continue;
-    std::optional<Split> best;
     // Only a split that leaves both parts as checkMesh wants them: a part still rejected is
     // better merged whole, as the agglomeration would have done.
-    double best_worst = 1.0;
-    for (const Plane& p : planes) {
-      std::optional<Split> s = split(c, p);
-      if (!s) continue;
-      if (const double w = split_worst(c, *s); w < best_worst) {
-        best_worst = w;
-        best = std::move(s);
-      }
-    }
+    const std::optional<Split> best = best_split(c, planes, 1.0);
     if (!best) {
       left.push_back(c);
       continue;
@@ -503,17 +509,9 @@ Index ReflexSplitter::split_with_neighbours(Index c) {
   // A few splits at most: the cells bent into each other come in pairs.
   for (std::size_t next = 0; next < queue.size() && parts.size() < 8; ++next) {
     const Index x = queue[next];
-    double best_worst = worst(x);
-    if (best_worst <= 1.0) continue;
-    std::optional<Split> best;
-    for (const Plane& p : reflex_planes(x)) {
-      std::optional<Split> s = split(x, p);
-      if (!s) continue;
-      if (const double w = split_worst(x, *s); w < best_worst) {
-        best_worst = w;
-        best = std::move(s);
-      }
-    }
+    const double before = worst(x);
+    if (before <= 1.0) continue;
+    const std::optional<Split> best = best_split(x, reflex_planes(x), before);
     if (!best) continue;
     commit(x, *best);
     const Index part_b = static_cast<Index>(region_.size()) - 1;
