@@ -83,6 +83,22 @@ TEST(LoopTriangulation, DivideAndConquerAvoidsDiagonalsOnAFace) {
   EXPECT_FALSE(triangulate_divide_and_conquer({p, blocked}, loop).has_value());
 }
 
+TEST(LoopTriangulation, DivideAndConquerOfALoopWithAReflexPoint) {
+  // A pentagon notched at D = (2, 1): no diagonal has the other points on its two sides
+  // (A-D has B and C apart, B-D has A and E apart), as on a face the vertex moves warped
+  // nearly along an interface (builtin:layers6 at level 6). The diagonals inside the loop
+  // are taken then, and no triangle folds.
+  std::vector<Vec3> p{{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {2, 1, 0}, {0, 3, 0}};
+  std::vector<std::uint8_t> faces(5, 0);
+  std::vector<int> loop{0, 1, 2, 3, 4};
+  const auto t = triangulate_divide_and_conquer({p, faces}, loop);
+  ASSERT_TRUE(t.has_value());
+  EXPECT_EQ(t->size(), 3u);
+  expect_triangulates(p, faces, loop, *t);
+  for (const Triangle& tri : *t)
+    EXPECT_GT((p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).z(), 0.0) << tri[0] << tri[1] << tri[2];
+}
+
 TEST(LoopTriangulation, FanAroundAnInnerPointOrAPointOfTheLoop) {
   Hexagon h;
   h.position.push_back(Vec3::Constant(0.5));

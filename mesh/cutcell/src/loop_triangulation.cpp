@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 namespace volmesh::cutcell {
 namespace {
@@ -28,6 +30,56 @@ MeanPlane mean_plane(const LoopPoints& points, std::span<const int> loop) {
   return {centre, sum};
 }
 
+// Whether the diagonal from loop point i to loop point j lies inside the loop seen along
+// `normal` (the loop turns counterclockwise about it): it leaves i into the loop and
+// crosses no side, no other point within tolerance of it.
+bool diagonal_inside(const LoopPoints& points, const std::vector<int>& loop, const Vec3& normal, int i, int j,
+                     double tolerance) {
+  const int n = static_cast<int>(loop.size());
+  const Vec3 unit = normal.normalized();
+  const auto at = [&](int k) -> const Vec3& { return points.position[loop[(k % n + n) % n]]; };
+  // Twice the area of (a, b, c) seen along the normal, over the length of a -> b: the
+  // distance of c to the left of that line.
+  const auto left = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double l = (b - a).norm();
+    return l > 0.0 ? (b - a).cross(c - a).dot(unit) / l : 0.0;
+  };
+  const Vec3 &a = at(i), &b = at(j), &prev = at(i - 1), &next = at(i + 1);
+  const bool inside = left(prev, a, next) >= 0.0 ? left(a, b, prev) > tolerance && left(b, a, next) > tolerance
+                                                  : !(left(a, b, next) <= tolerance && left(b, a, prev) <= tolerance);
+  if (!inside) return false;
+  for (int k = 0; k < n; ++k) {
+    const int k1 = (k + 1) % n;
+    if (k != i && k != j && std::abs(left(a, b, at(k))) <= tolerance) {
+      const double t = (at(k) - a).dot(b - a) / (b - a).squaredNorm();
+      if (t > 0.0 && t < 1.0) return false;
+    }
+    if (k == i || k == j || k1 == i || k1 == j) continue;
+    const Vec3 &c = at(k), &d = at(k1);
+    if (left(a, b, c) * left(a, b, d) < 0.0 && left(c, d, a) * left(c, d, b) < 0.0) return false;
+  }
+  return true;
+}
+
+// The shortest diagonal (i, j), i < j, whose ends may be joined and that `fits`; (-1, -1) when
+// there is none.
+template <class Fits>
+std::pair<int, int> shortest_diagonal(const LoopPoints& points, const std::vector<int>& loop, const Fits& fits) {
+  const int n = static_cast<int>(loop.size());
+  std::pair<int, int> out{-1, -1};
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i + 2 < n; ++i)
+    for (int j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours around the loop
+      if (!may_join(points, loop[i], loop[j])) continue;
+      const double length = (points.position[loop[j]] - points.position[loop[i]]).norm();
+      if (length >= best || !fits(i, j)) continue;
+      best = length;
+      out = {i, j};
+    }
+  return out;
+}
+
 bool divide(const LoopPoints& points, std::vector<int> loop, std::vector<Triangle>& out) {
   const int n = static_cast<int>(loop.size());
   if (n < 3) return false;
@@ -39,38 +91,30 @@ bool divide(const LoopPoints& points, std::vector<int> loop, std::vector<Triangl
   double scale = 0.0;
   for (int v : loop) scale = std::max(scale, (points.position[v] - plane.centre).norm());
   const double tolerance = 1e-9 * scale;
-  int best_i = -1, best_j = -1;
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i + 2 < n; ++i) {
-    for (int j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // neighbours around the loop
-      if (!may_join(points, loop[i], loop[j])) continue;
-      const Vec3& a = points.position[loop[i]];
-      const Vec3 diagonal = points.position[loop[j]] - a;
-      const double length = diagonal.norm();
-      if (length >= best) continue;
-      const Vec3 split = diagonal.cross(plane.normal);
-      const double split_norm = split.norm();
-      if (!(split_norm > 0.0)) continue;
-      // Points strictly between i and j on one side, the others on the other side.
-      bool ok = true;
-      int side = 0;
-      for (int k = 0; k < n && ok; ++k) {
-        if (k == i || k == j) continue;
-        const double s = split.dot(points.position[loop[k]] - a) / split_norm;
-        const int want = (k > i && k < j) ? 1 : -1;
-        if (std::abs(s) <= tolerance) { ok = false; break; }
-        const int got = s > 0 ? 1 : -1;
-        if (side == 0) side = got * want;
-        ok = got * want == side;
-      }
-      if (ok) {
-        best = length;
-        best_i = i;
-        best_j = j;
-      }
+  // Points strictly between i and j on one side of the diagonal, the others on the other.
+  const auto separates = [&](int i, int j) {
+    const Vec3& a = points.position[loop[i]];
+    const Vec3 split = (points.position[loop[j]] - a).cross(plane.normal);
+    const double split_norm = split.norm();
+    if (!(split_norm > 0.0)) return false;
+    int side = 0;
+    for (int k = 0; k < n; ++k) {
+      if (k == i || k == j) continue;
+      const double s = split.dot(points.position[loop[k]] - a) / split_norm;
+      if (std::abs(s) <= tolerance) return false;
+      const int got = (s > 0 ? 1 : -1) * ((k > i && k < j) ? 1 : -1);
+      if (side == 0) side = got;
+      if (got != side) return false;
     }
-  }
+    return true;
+  };
+  auto [best_i, best_j] = shortest_diagonal(points, loop, separates);
+  // No diagonal separates the points (a loop that is not convex in its mean plane, a contour
+  // on a face nearly tangent to the interface): any diagonal inside the loop seen along the
+  // mean normal, which keeps the triangles from folding.
+  if (best_i < 0)
+    std::tie(best_i, best_j) = shortest_diagonal(
+        points, loop, [&](int i, int j) { return diagonal_inside(points, loop, plane.normal, i, j, tolerance); });
   if (best_i < 0) return false;
   std::vector<int> first(loop.begin() + best_i, loop.begin() + best_j + 1);
   std::vector<int> second(loop.begin() + best_j, loop.end());
