@@ -14,6 +14,14 @@ Index PolyMesh::add_face(std::span<const Index> vertices, Index owner_cell, Inde
   return static_cast<Index>(owner.size()) - 1;
 }
 
+void PolyMesh::reserve_faces(std::size_t faces, std::size_t vertices) {
+  face_offsets.reserve(face_offsets.size() + faces);
+  face_vertices.reserve(face_vertices.size() + vertices);
+  owner.reserve(owner.size() + faces);
+  neighbour.reserve(neighbour.size() + faces);
+  face_tag.reserve(face_tag.size() + faces);
+}
+
 Index PolyMesh::tag_index(const std::string& name) {
   auto it = std::find(tag_names.begin(), tag_names.end(), name);
   if (it != tag_names.end()) return static_cast<Index>(it - tag_names.begin());

@@ -94,7 +94,7 @@ class Agglomerator {
   std::vector<std::vector<Index>> faces_of_;
   std::vector<char> face_alive_, cell_alive_;
   // The faces join_faces grew: per face an index into joined_loops_, kNoIndex for the rest
-  // (copying every loop took a fifth of the merging's setup).
+  // (copying every loop took a quarter of the merging's setup).
   std::vector<Index> joined_loop_;
   std::vector<std::vector<Index>> joined_loops_;
   std::vector<Index> changed_;  // cells whose centre or faces changed since the last round
@@ -313,12 +313,7 @@ void Agglomerator::rebuild() {
       corners += loop(f).size();
       for (Index v : loop(f)) point_id[v] = 0;
     }
-  // Sized up front, so that the arrays are filled without regrowing.
-  out.face_offsets.reserve(faces + 1);
-  out.face_vertices.reserve(corners);
-  out.owner.reserve(faces);
-  out.neighbour.reserve(faces);
-  out.face_tag.reserve(faces);
+  out.reserve_faces(faces, corners);
   out.points.reserve(mesh_.points.size());
   for (Index v = 0; v < mesh_.num_points(); ++v)
     if (point_id[v] == 0) {

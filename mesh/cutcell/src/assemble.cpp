@@ -248,12 +248,13 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
   // Tags in order of first use, then the faces written on both cores, each block at its place.
   std::vector<std::vector<Index>> tags(blocks);
   std::vector<std::size_t> first_face(blocks + 1, 0), first_key(blocks + 1, 0);
+  const std::string unnamed = "boundary";
   for (Index b = 0; b < blocks; ++b) {
     std::size_t named = 0;
     for (const FaceOut& o : faces[b].faces) {
       if (o.neighbour != kNoIndex) continue;
-      const std::string& name = o.surface ? names[b][named++] : std::string();
-      tags[b].push_back(mesh.tag_index(name.empty() ? "boundary" : name));
+      const std::string* name = o.surface ? &names[b][named++] : nullptr;
+      tags[b].push_back(mesh.tag_index(name && !name->empty() ? *name : unnamed));
     }
     first_face[b + 1] = first_face[b] + faces[b].faces.size();
     first_key[b + 1] = first_key[b] + faces[b].keys.size();

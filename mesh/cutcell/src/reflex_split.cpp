@@ -566,11 +566,7 @@ PolyMesh ReflexSplitter::rebuild() {
   std::size_t corners = 0;
   for (Index f = 0; f < faces; ++f) corners += loop(f).size();
   PolyMesh out;
-  out.face_offsets.reserve(faces + 1);
-  out.face_vertices.reserve(corners);
-  out.owner.reserve(faces);
-  out.neighbour.reserve(faces);
-  out.face_tag.reserve(faces);
+  out.reserve_faces(static_cast<std::size_t>(faces), corners);
   for (Index f = 0; f < faces; ++f) out.add_face(loop(f), owner_[f], neighbour_[f], tag_[f]);
   out.points = std::move(mesh_.points);
   out.cell_region = region_;

@@ -36,6 +36,10 @@ struct PolyMesh {
   Index add_face(std::span<const Index> vertices, Index owner_cell, Index neighbour_cell,
                  Index tag = kNoIndex);
 
+  // Room for this many more faces with this many vertices in all, so that add_face does not
+  // regrow the arrays.
+  void reserve_faces(std::size_t faces, std::size_t vertices);
+
   // Index of the tag with this name, created if missing.
   Index tag_index(const std::string& name);
 };
