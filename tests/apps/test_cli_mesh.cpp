@@ -125,8 +125,9 @@ TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
 
 // A ball, two real surfaces from libcgal-demo and the seven regions of builtin:primitives
 // (level 4 failed on three skewed faces until the edges crossed twice kept both crossings).
-// layers6 and fandisk still fail checkMesh on a few faces next to sharp edges (issue 4 is
-// open on them); their face counts are bounded in test_cutcell_quality.
+// layers6 still fails checkMesh at levels 3 and 5, on one inverted face pyramid and one
+// skewed face each where its pinched-out layer thins to nothing; level 4 is held to none in
+// test_cutcell_quality.
 TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   const std::string meshes = std::string(VOLMESH_CGAL_DATA) + "/meshes/";
   const std::vector<std::pair<std::string, std::string>> cases{
@@ -151,7 +152,7 @@ int count_after(const std::string& report, const std::string& label) {
 }
 
 // `volmesh check` counts the faces that make checkMesh fail as checkMesh does: on
-// builtin:layers6 at level 3, which still has one (issue 4).
+// builtin:layers6 at level 3, which still has one.
 TEST(CliMesh, CheckCountsTheFacesCheckMeshRejects) {
   const std::string report = check_mesh_report("cutcell builtin:layers6 --level 3", "layers6");
   const fs::path out = foam_case("layers6");
