@@ -281,6 +281,15 @@ std::vector<Index> touched_leaves(const Octree& tree, const std::vector<Index>& 
   return out;
 }
 
+// Splits the leaves (and what the 2:1 balance needs); the leaves touched_leaves gives.
+std::vector<Index> split_and_touched(Octree& tree, std::vector<Index> leaves) {
+  return touched_leaves(tree, new_leaves(tree, split_balanced(tree, std::move(leaves))));
+}
+
+void append_nodes(const Octree& tree, const std::vector<Index>& leaves, std::vector<OctreeLeaf>& out) {
+  for (Index i : leaves) out.push_back(tree.leaf(i));
+}
+
 }  // namespace
 
 ExtraRuleSplits split_by_extra_rules(Octree& tree, const Domain& domain, const OctreeVertices& vertices,
@@ -291,10 +300,9 @@ ExtraRuleSplits split_by_extra_rules(Octree& tree, const Domain& domain, const O
   leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
   ExtraRuleSplits out;
   while (!leaves.empty()) {
-    const std::vector<OctreeLeaf> split = split_balanced(tree, std::move(leaves));
+    const std::vector<Index> touched = split_and_touched(tree, std::move(leaves));
     ++out.rounds;
-    const std::vector<Index> touched = touched_leaves(tree, new_leaves(tree, split));
-    for (Index i : touched) out.touched.push_back(tree.leaf(i));
+    append_nodes(tree, touched, out.touched);
     leaves = selected_leaves(tree, domain, known, touched, max_level, clearance);
   }
   return out;
@@ -302,9 +310,7 @@ ExtraRuleSplits split_by_extra_rules(Octree& tree, const Domain& domain, const O
 
 std::vector<OctreeLeaf> split_touching(Octree& tree, std::vector<Index> leaves) {
   std::vector<OctreeLeaf> out;
-  if (leaves.empty()) return out;
-  for (Index i : touched_leaves(tree, new_leaves(tree, split_balanced(tree, std::move(leaves)))))
-    out.push_back(tree.leaf(i));
+  if (!leaves.empty()) append_nodes(tree, split_and_touched(tree, std::move(leaves)), out);
   return out;
 }
 
