@@ -30,13 +30,29 @@ bool on_outer_boundary(const Domain& domain, const Vec3& q, const Vec3& normal, 
   return (domain.region(q + step * normal) == 0) != (domain.region(q - step * normal) == 0);
 }
 
+// Whether a point of a primitive's surface lies on the closure of the outer boundary. On an
+// edge of the boundary where two primitives meet at a reflex angle (the circle where the
+// box's top meets the cylinder's side in builtin:primitives) the test along the normal alone
+// fails: one side is the other primitive's inside. The surface beside the edge is boundary,
+// and one of four tangent steps lands on it: a half-plane of the tangent plane holds one of
+// ±t1, ±t2 strictly inside.
+bool on_closed_outer_boundary(const Domain& domain, const Vec3& q, const Vec3& normal,
+                              double step) {
+  if (on_outer_boundary(domain, q, normal, step)) return true;
+  const Vec3 t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);
+  constexpr double kTangentSteps = 2.0;  // beyond the normal step, so the edge is left behind
+  for (const Vec3& t : {t1, Vec3(-t1), t2, Vec3(-t2)})
+    if (on_outer_boundary(domain, q + kTangentSteps * step * t, normal, step)) return true;
+  return false;
+}
+
 Vec3 closest_on_analytic(const AnalyticDomain& domain, const Vec3& p, double step) {
   std::optional<Vec3> best;
   double best_distance = std::numeric_limits<double>::infinity();
   for (const Primitive& prim : domain.primitives()) {
     const SurfacePoint s = closest_surface_point(prim, p);
     const double d = (s.point - p).squaredNorm();
-    if (d < best_distance && on_outer_boundary(domain, s.point, s.normal, step)) {
+    if (d < best_distance && on_closed_outer_boundary(domain, s.point, s.normal, step)) {
       best = s.point;
       best_distance = d;
     }

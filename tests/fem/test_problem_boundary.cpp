@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "volmesh/domain/analytic.hpp"
 #include "volmesh/domain/builtin.hpp"
@@ -141,6 +142,19 @@ TEST(TrueBoundary, MultiMaterialDomainMapsOntoTheOuterBoundaryOnly) {
     ++tested;
   }
   EXPECT_GT(tested, 100);
+}
+
+TEST(TrueBoundary, PointsOnAReflexEdgeOfTheBoundaryMapToThemselves) {
+  // builtin:primitives: the box's top (z = 1.2) meets the cylinder's side (radius 0.5, up to
+  // z = 1.4) in a circle. Above the top is the cylinder, beside the side the box, yet both
+  // surfaces are boundary next to the circle: its points are on the true boundary.
+  const auto primitives = make_builtin_domain("primitives");
+  const PointMap map = true_boundary_map(*primitives);
+  for (int i = 0; i < 16; ++i) {
+    const double a = 0.5 * std::numbers::pi * (i + 0.5) / 16.0 - 0.25 * std::numbers::pi;  // x > 0, inside the box
+    const Vec3 p(0.5 * std::cos(a), 0.5 * std::sin(a), 1.2);
+    EXPECT_LT((map(p) - p).norm(), 1e-15) << p.transpose();
+  }
 }
 
 }  // namespace

@@ -71,9 +71,9 @@ UserPoissonProblem user_poisson_problem(const std::string& exact_text,
 // The closest point of the domain's outer boundary (the interfaces with region 0), for
 // PoissonProblem::to_true_boundary. For an AnalyticDomain it is exact: each primitive's own
 // closest point (sphere: radial projection; box, cylinder, half-space: clamping; torus: closed
-// form; ellipsoid: Eberly's root bracketing), keeping those that lie on the outer boundary,
-// the nearest of them. Any other domain, or a point for which no primitive's closest point
-// lies on the boundary (e.g. next to a concave CSG edge), uses project_along_normals.
+// form; ellipsoid: Eberly's root bracketing), keeping those that lie on the outer boundary or
+// on its edges, the nearest of them. Any other domain, or a point for which no primitive's
+// closest point lies on the boundary, uses project_along_normals.
 PointMap true_boundary_map(const Domain& domain);
 
 // Closest-point iteration with the domain's own queries: q ← the outer-boundary crossing
