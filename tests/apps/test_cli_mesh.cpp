@@ -97,7 +97,7 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
 
 // The OpenFOAM case check_mesh_report writes for `name`.
 fs::path foam_case(const std::string& name) {
-  return fs::temp_directory_path() / ("volmesh-test-mesh-foam-" + name) / (name + ".foam");
+  return test::scratch_path("mesh-foam-" + name) / (name + ".foam");
 }
 
 // Meshes into an OpenFOAM case (foam_case(name)) and returns checkMesh's report ("" when
