@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -41,9 +42,16 @@ inline int count_lines(const std::string& s) {
   return n;
 }
 
+// A test's scratch directory under the system temp dir, named after the test and the build
+// (the binary's path), so that builds tested at the same time on one machine keep apart.
+inline std::filesystem::path scratch_path(const std::string& name) {
+  const std::size_t build = std::hash<std::string>{}(VOLMESH_BINARY) % 0x100000000u;
+  return std::filesystem::temp_directory_path() / ("volmesh-test-" + std::to_string(build) + "-" + name);
+}
+
 // A fresh scratch directory per test.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("volmesh-test-" + name);
+  const auto dir = scratch_path(name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

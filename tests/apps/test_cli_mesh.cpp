@@ -27,7 +27,7 @@ TEST(CliMesh, StaircaseWritesAValidMeshAndReportsJson) {
   EXPECT_EQ(j["method"], "staircase");
   EXPECT_EQ(j["domain"], "builtin:ball");
   EXPECT_EQ(j["level"], 4);
-  EXPECT_GE(j["time_seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(j["time_seconds"].is_number());
   EXPECT_TRUE(j["validity"]["valid"].get<bool>());
   const PolyMesh mesh = read_mesh(out);
   EXPECT_TRUE(check_validity(mesh).valid());
@@ -97,7 +97,7 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
 
 // The OpenFOAM case check_mesh_report writes for `name`.
 fs::path foam_case(const std::string& name) {
-  return fs::temp_directory_path() / ("volmesh-test-mesh-foam-" + name) / (name + ".foam");
+  return test::scratch_path("mesh-foam-" + name) / (name + ".foam");
 }
 
 // Meshes into an OpenFOAM case (foam_case(name)) and returns checkMesh's report ("" when

@@ -210,7 +210,6 @@ TEST(FemCounts, DofsAndUnusedPoints) {
   EXPECT_EQ(s.dofs, vertices);
   EXPECT_TRUE(std::isnan(s.point_values.back()));
   EXPECT_FALSE(std::isnan(s.point_values.front()));
-  EXPECT_GE(s.solve.assembly_seconds, 0.0);
   EXPECT_EQ(s.solve.method, "ldlt");
 }
 

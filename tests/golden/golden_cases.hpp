@@ -1,0 +1,43 @@
+#pragma once
+// The golden regression cases: small meshes of every mesher and one Poisson solve per
+// mesher, each summarised (golden_summary.hpp) and compared with the summary stored in
+// tests/golden/expected/<name>.json. regenerate.sh rewrites the stored summaries on purpose.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <memory>
+
+#include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/domain/domain.hpp"
+#include "volmesh/fem/solution.hpp"
+
+namespace volmesh::golden {
+
+struct GoldenCase {
+  std::string name;    // the stored summary's file name, without .json
+  std::string method;  // a mesher: "cutcell" or "staircase"
+  // open_domain's argument; "data:" stands for the tests' data directory (tests/data), so
+  // that the stored summary names no absolute path.
+  std::string domain;
+  int level;
+  // Mesher options by their command-line names (without "--"), with their values.
+  std::vector<std::pair<std::string, std::string>> options;
+  std::string problem;  // a Poisson problem of the library solved on the mesh, or empty
+};
+
+// Every case, in one table.
+const std::vector<GoldenCase>& golden_cases();
+
+// The case's domain ("data:" resolved).
+std::unique_ptr<Domain> open_case_domain(const GoldenCase& c);
+
+// The case's mesh, from the library's mesher. Throws std::invalid_argument for a method or
+// an option it does not know.
+PolyMesh mesh_case(const GoldenCase& c, const Domain& domain);
+
+// The case's problem solved on the mesh in the space `volmesh solve` picks for an octree
+// mesh (the polyhedral space).
+fem::ScalarSolution solve_case(const GoldenCase& c, const Domain& domain, const PolyMesh& mesh);
+
+}  // namespace volmesh::golden
