@@ -6,8 +6,8 @@
 // its own figures as JSON.
 //
 // A method is added in one place: a file mesh/meshers/src/<method>.cpp that defines its
-// MeshFunction and registers its MesherInfo (registration.hpp); every subcommand finds it
-// here at once.
+// MeshFunction and registers its MesherInfo (registration.hpp), with the method's module
+// linked in mesh/meshers/CMakeLists.txt; every subcommand finds it here at once.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
