@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "volmesh/core/boundary.hpp"
 #include "volmesh/core/errors.hpp"
@@ -19,19 +20,24 @@ namespace {
 
 struct CheckOptions {
   std::string mesh, surface, quality_output;
-  bool json = false;
+  bool json = false, quiet = false;
 };
+
+// Where the steps start on the progress bar.
+constexpr double kValidityStart = 0.1, kQualityStart = 0.2, kDistanceStart = 0.4;
 
 // Relative accuracy of the reported Hausdorff distance, as a fraction of the diagonal.
 constexpr double kHausdorffBound = 1e-6;
 
 nlohmann::json surface_comparison(const PolyMesh& mesh, const ValidityReport& validity,
-                                  const std::string& path, bool json) {
+                                  const std::string& path, bool json, ProgressLine& progress) {
+  progress("distance to " + path, kDistanceStart);
   TriSurface surface = read_surface(path);
   const SurfaceReport sr = check_surface(surface, path);
   const double diagonal = bounding_box(surface.points).diagonal();
   const HausdorffDistance d =
       hausdorff_distance(boundary_surface(mesh), surface, kHausdorffBound * diagonal);
+  progress.clear();
   const double volume_error = (validity.total_volume - sr.volume) / sr.volume;
   if (!json) {
     std::cout << "against " << path << " (volume " << sr.volume << ", diagonal " << diagonal
@@ -52,8 +58,12 @@ nlohmann::json surface_comparison(const PolyMesh& mesh, const ValidityReport& va
 }
 
 int run_check(const CheckOptions& opt) {
+  ProgressLine progress("check", opt.quiet);
+  progress("reading " + opt.mesh, 0.0);
   const PolyMesh mesh = read_mesh(opt.mesh);
+  progress("validity", kValidityStart);
   const ValidityReport validity = check_validity(mesh);
+  progress.clear();
   nlohmann::json j{{"file", opt.mesh}, {"validity", to_json(validity)}};
   j["bounding_box"] = to_json(bounding_box(mesh.points));
   if (!opt.json) {
@@ -62,8 +72,10 @@ int run_check(const CheckOptions& opt) {
   }
   // Geometry is meaningless when faces point at vertices or cells that do not exist.
   if (validity.bad_indices == 0) {
+    progress("quality", kQualityStart);
     const QualityMeasurements measured = measure_quality(mesh);
     const QualityReport quality = quality_report(mesh, measured);
+    progress.clear();
     j["quality"] = to_json(quality);
     if (!opt.json) print_quality(std::cout, quality);
     if (!opt.quality_output.empty()) {
@@ -73,7 +85,8 @@ int run_check(const CheckOptions& opt) {
       write_vtu(mesh, opt.quality_output, fields);
     }
   }
-  if (!opt.surface.empty() && validity.bad_indices == 0) j["surface"] = surface_comparison(mesh, validity, opt.surface, opt.json);
+  if (!opt.surface.empty() && validity.bad_indices == 0)
+    j["surface"] = surface_comparison(mesh, validity, opt.surface, opt.json, progress);
   if (opt.json) std::cout << j.dump(2) << "\n";
   if (!validity.valid()) {
     std::cerr << "volmesh: error: " << opt.mesh << ": invalid mesh"
@@ -95,6 +108,7 @@ Command add_check_command(CLI::App& root) {
   app->add_option("-o,--quality-vtu", opt->quality_output,
                   "write the mesh with one cell array per quality metric (.vtu)");
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  add_quiet_flag(*app, opt->quiet);
   return {app, [opt] { return run_check(*opt); }};
 }
 

@@ -17,6 +17,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "solve_setup.hpp"
 #include "study_run.hpp"
 #include "volmesh/core/errors.hpp"
@@ -25,6 +26,7 @@
 #include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/partitioned_io.hpp"
+#include "volmesh/meshers/registry.hpp"
 #include "volmesh/partition/part_mesh.hpp"
 #include "volmesh/partition/partition.hpp"
 
@@ -44,6 +46,7 @@ struct DemoOptions {
   std::string output = "demo-output";
   int level = 6;                   // the primitives mesh
   std::string study_levels = "2..5";
+  bool quiet = false;
 };
 
 double seconds_since(Clock::time_point start) {
@@ -134,9 +137,15 @@ int run_demo(const DemoOptions& opt) {
               std::to_string(opt.level) + ")");
   Clock::time_point t = Clock::now();
   const std::unique_ptr<Domain> domain = open_domain("builtin:primitives");
-  const PolyMesh mesh =
-      mesh_at_level(kPipelineMethod, *domain, "builtin:primitives", opt.level, false, false)
-          .mesh;
+  const meshers::MesherInfo& mesher = meshers::find_mesher(kPipelineMethod);
+  const PolyMesh mesh = [&] {
+    ProgressLine progress("demo", opt.quiet);
+    meshers::MeshRequest request;
+    request.domain_name = "builtin:primitives";
+    request.level = opt.level;
+    request.progress = part_of(progress.progress(), 0.0, 1.0, kPipelineMethod + ": ");
+    return meshers::mesh(mesher, *domain, request).mesh;
+  }();
   std::cout << "  " << mesh.num_cells() << " cells, " << mesh.num_points() << " points ("
             << seconds_since(t) << " s)\n";
 
@@ -151,7 +160,11 @@ int run_demo(const DemoOptions& opt) {
   t = Clock::now();
   PartitionOptions options;
   options.parts = kParts;
-  const Partition partition = partition_mesh(mesh, options, "primitives");
+  const Partition partition = [&] {
+    ProgressLine progress("demo", opt.quiet);
+    progress("partitioning", 0.0);
+    return partition_mesh(mesh, options, "primitives");
+  }();
   const PartitionStats& s = partition.stats;
   std::cout << "  edge cut " << s.edge_cut << " faces, imbalance " << s.imbalance << ", cells per part";
   for (Index c : s.part_cells) std::cout << " " << c;
@@ -161,8 +174,11 @@ int run_demo(const DemoOptions& opt) {
   t = Clock::now();
   const ProblemSpec problem{"multi-material", "", "", 1.0};
   const fem::PoissonProblem poisson = poisson_problem(problem, *domain, mesh);
-  const SpaceChoice space = choose_space("", kPipelineMethod, mesh);
-  const fem::ScalarSolution solution = solve_scalar(mesh, poisson, space);
+  const SpaceChoice space = choose_space("", mesher.default_space, mesh);
+  const fem::ScalarSolution solution = [&] {
+    ProgressLine progress("demo", opt.quiet);
+    return solve_scalar(mesh, poisson, space, part_of(progress.progress(), 0.0, 1.0, "solving: "));
+  }();
   const std::vector<double>& u =
       solution.point_values.empty() ? solution.cell_values : solution.point_values;
   const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
@@ -182,8 +198,10 @@ int run_demo(const DemoOptions& opt) {
   spec.domain = "builtin:ball";
   spec.first_level = first_level;
   spec.last_level = last_level;
-  const StudyOutcome outcome =
-      run_study(spec, [](const std::string& line) { std::cerr << "  " << line << "\n"; });
+  const StudyOutcome outcome = [&] {
+    ProgressLine progress("demo", opt.quiet);
+    return run_study(spec, part_of(progress.progress(), 0.0, 1.0, "study: "));
+  }();
   write_study_outputs(out / "convergence", outcome);
   fem::print_convergence_table(std::cout, outcome.series);
   print_verdict(outcome);
@@ -208,6 +226,7 @@ Command add_demo_command(CLI::App& root) {
       ->capture_default_str();
   app->add_option("--study-levels", opt->study_levels, "levels A..B of the convergence study")
       ->capture_default_str();
+  add_quiet_flag(*app, opt->quiet);
   return {app, [opt] { return run_demo(*opt); }};
 }
 

@@ -1,6 +1,7 @@
 // volmesh partition <mesh> --parts K -o <out.pvtu | out.msh | out.vtu> [--contiguous]
-// [--method kway|recursive] [--json]: METIS on the face-adjacency graph, one file per part
-// (PVTU), Gmsh partitioned entities (MSH), or the whole mesh with a "partition" cell array.
+// [--method kway|recursive] [--json] [--quiet]: METIS on the face-adjacency graph, one file
+// per part (PVTU), Gmsh partitioned entities (MSH), or the whole mesh with a "partition" cell
+// array.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -25,8 +27,11 @@ namespace {
 struct PartitionCliOptions {
   std::string mesh, output, method = "kway";
   Index parts = 0;
-  bool contiguous = false, json = false;
+  bool contiguous = false, json = false, quiet = false;
 };
+
+// Where the steps start on the progress bar.
+constexpr double kCheckStart = 0.2, kPartitionStart = 0.3, kWriteStart = 0.7;
 
 using Clock = std::chrono::steady_clock;
 
@@ -99,10 +104,13 @@ void print_stats(std::ostream& os, const std::string& output, Index cells,
 
 int run_partition(const PartitionCliOptions& opt) {
   const Clock::time_point start = Clock::now();
+  ProgressLine progress("partition", opt.quiet);
+  progress("reading " + opt.mesh, 0.0);
   const PolyMesh mesh = read_mesh(opt.mesh);
   const double read_seconds = seconds_since(start);
   // Never partition (and hand on) a broken mesh.
   const Clock::time_point checking = Clock::now();
+  progress("validity", kCheckStart);
   const ValidityReport validity = check_validity(mesh);
   if (!validity.valid())
     throw InputError(
@@ -115,15 +123,19 @@ int run_partition(const PartitionCliOptions& opt) {
   options.parts = opt.parts;
   options.contiguous = opt.contiguous;
   options.method = opt.method == "recursive" ? PartitionMethod::Recursive : PartitionMethod::KWay;
+  progress("METIS into " + std::to_string(opt.parts) + " parts", kPartitionStart);
   const Partition partition = partition_mesh(mesh, options, opt.mesh);
   const PartitionStats& s = partition.stats;
+  progress.clear();
   if (opt.contiguous && !s.contiguity_enforced && opt.parts > 1)
     std::cerr << "warning: " << opt.mesh << ": the mesh is in " << s.mesh_components
               << " disconnected pieces; partitioned without the contiguity constraint\n";
 
   const Clock::time_point writing = Clock::now();
+  progress("writing " + opt.output, kWriteStart);
   write_partitioned(mesh, partition, opt);
   const double write_seconds = seconds_since(writing);
+  progress.clear();
 
   if (opt.json) {
     nlohmann::json j = to_json(s);
@@ -172,6 +184,7 @@ Command add_partition_command(CLI::App& root) {
                 "make every part connected (METIS_OPTION_CONTIG); a mesh in several pieces "
                 "is partitioned without it, with a warning");
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  add_quiet_flag(*app, opt->quiet);
   app->footer("Example: volmesh partition mesh.vtu --parts 8 -o parts.pvtu");
   return {app, [opt] { return run_partition(*opt); }};
 }

@@ -1,17 +1,15 @@
-// volmesh sdf <surface> --dim 2^k+1 -o <grid.rawiv> [--margin F] [--json]: exact signed
-// distances (positive inside) on a cubic grid around the surface, for the hexdc mesher.
-#include <unistd.h>
-
+// volmesh sdf <surface> --dim 2^k+1 -o <grid.rawiv> [--margin F] [--json] [--quiet]: exact
+// signed distances (positive inside) on a cubic grid around the surface (a .rawiv domain).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "volmesh/domain/rawiv.hpp"
 #include "volmesh/domain/sdf_compute.hpp"
 #include "volmesh/io/surface_check.hpp"
@@ -25,7 +23,7 @@ struct SdfOptions {
   std::string surface, output;
   Index dim = 0;
   double margin = 0.05;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -34,34 +32,19 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A bar on stderr once the work has taken a second, on a terminal only (logs stay clean).
-class ProgressBar {
- public:
-  explicit ProgressBar(std::string label)
-      : label_(std::move(label)), start_(Clock::now()), shown_(isatty(STDERR_FILENO) != 0) {}
-  ~ProgressBar() {
-    if (drawn_) std::cerr << "\n";
-  }
-  void operator()(double fraction) {
-    if (!shown_ || seconds_since(start_) < 1.0) return;
-    const int width = 40, filled = static_cast<int>(fraction * width);
-    std::cerr << "\r" << label_ << " [" << std::string(filled, '#')
-              << std::string(width - filled, ' ') << "] " << static_cast<int>(100 * fraction) << "%"
-              << std::flush;
-    drawn_ = true;
-  }
-
- private:
-  std::string label_;
-  Clock::time_point start_;
-  bool shown_, drawn_ = false;
-};
+// The share of the progress bar that reading and checking the surface take; the sampling
+// and the writing follow.
+constexpr double kReadShare = 0.05;
+constexpr double kWriteStart = 0.95;
 
 int run_sdf(const SdfOptions& opt) {
   const Clock::time_point start = Clock::now();
+  ProgressLine progress("sdf", opt.quiet);
+  progress("reading " + opt.surface, 0.0);
   TriSurface surface = read_surface(opt.surface);
   // Refuses holes and the like with one line; flips an inward surface.
   const SurfaceReport report = check_surface(surface, opt.surface);
+  progress.clear();
   for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
   if (!report.self_intersections.empty())
     std::cerr << "warning: " << opt.surface
@@ -71,15 +54,17 @@ int run_sdf(const SdfOptions& opt) {
   const Clock::time_point computing = Clock::now();
   const SignedDistance distance(std::move(surface), opt.surface);
   VoxelGrid grid = sdf_layout(distance.bounds(), opt.dim, opt.margin);
-  {
-    ProgressBar bar("sdf " + std::to_string(opt.dim) + "^3");
-    distance.sample(grid, std::ref(bar));
-  }
+  const std::string stage = "distances at " + std::to_string(opt.dim) + "^3 points";
+  distance.sample(grid, [&](double fraction) {
+    progress(stage, kReadShare + fraction * (kWriteStart - kReadShare));
+  });
   const double distance_time = seconds_since(computing);
 
   const Clock::time_point writing = Clock::now();
+  progress("writing " + opt.output, kWriteStart);
   write_rawiv(grid, opt.output);
   const double write_time = seconds_since(writing);
+  progress.clear();
 
   const auto [lo, hi] = std::minmax_element(grid.values.begin(), grid.values.end());
   const auto inside =
@@ -143,6 +128,7 @@ Command add_sdf_command(CLI::App& root) {
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  add_quiet_flag(*app, opt->quiet);
   app->footer("Example: volmesh sdf armadillo.off --dim 129 -o armadillo.rawiv");
   return {app, [opt] { return run_sdf(*opt); }};
 }

@@ -1,5 +1,5 @@
 // volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X --domain D --level N)
-//   [--space S] [--exact EXPR --source EXPR --k K] -o out.vtu [--json]
+//   [--space S] [--exact EXPR --source EXPR --k K] -o out.vtu [--json] [--quiet]
 // One solve, written as a VTU with the solution, its error where an exact solution is known,
 // and the regions.
 #include <CLI/CLI.hpp>
@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "mesher_cli.hpp"
+#include "progress_line.hpp"
 #include "solve_setup.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/meshers/registry.hpp"
 
 namespace volmesh::cli {
 
@@ -21,9 +24,15 @@ namespace {
 struct SolveOptions {
   std::string kind, mesh, method, domain, space, output;
   int level = -1;
-  bool tets = false, json = false;
+  meshers::MethodOptions given;
+  bool json = false, quiet = false;
   ProblemSpec problem;
 };
+
+// The share of the progress bar that reading or meshing takes; the solve and the writing
+// follow.
+constexpr double kMeshShare = 0.5;
+constexpr double kWriteStart = 0.95;
 
 using Clock = std::chrono::steady_clock;
 
@@ -45,11 +54,13 @@ struct Input {
   // The mesh is its own domain: its boundary points are on the true boundary already (a
   // projection along normals could leave a point at a sharp edge for another surface).
   bool own_boundary = false;
+  std::string default_space;  // the mesher's (MesherInfo::default_space)
 };
 
-Input read_input(const SolveOptions& opt) {
+Input read_input(const SolveOptions& opt, const Progress& progress) {
   Input in;
   if (!opt.mesh.empty()) {
+    report(progress, "reading " + opt.mesh, 0.0);
     in.mesh = read_mesh(opt.mesh);
     const ValidityReport r = check_validity(in.mesh);
     if (!r.valid())
@@ -61,12 +72,20 @@ Input read_input(const SolveOptions& opt) {
     in.own_boundary = opt.domain.empty();
     return in;
   }
-  const std::string spec = opt.domain.empty() ? default_domain(opt.method) : opt.domain;
+  const meshers::MesherInfo& method = meshers::find_mesher(opt.method);
+  const std::string spec = opt.domain.empty() ? method.default_domain : opt.domain;
   in.domain = open_domain(spec);
   in.domain_name = domain_display_name(spec);
-  LevelMesh m = mesh_at_level(opt.method, *in.domain, in.domain_name, opt.level, opt.tets);
+  meshers::MeshRequest request;
+  request.domain_name = in.domain_name;
+  request.level = opt.level;
+  request.uniform = true;
+  request.options = opt.given;
+  request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
+  meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
   in.mesh = std::move(m.mesh);
   in.h = m.h;
+  in.default_space = method.default_space;
   return in;
 }
 
@@ -79,13 +98,21 @@ int run_solve(const SolveOptions& opt) {
                      (elasticity ? "an elasticity" : "a Poisson") + " problem: use volmesh solve " +
                      (elasticity ? "elasticity" : "poisson"));
 
-  const Input in = read_input(opt);
+  if (opt.method.empty() && !opt.given.empty()) {
+    const auto& [name, value] = *opt.given.begin();
+    std::cerr << "volmesh solve: " << meshers::option_text(name, value)
+              << " is a meshing option: it needs --method\n";
+    return 2;
+  }
+  if (!opt.method.empty() && !options_apply("solve", meshers::find_mesher(opt.method), opt.given))
+    return 2;
+  ProgressLine progress_line("solve", opt.quiet);
+  const Progress progress = progress_line.progress();
+  const Input in = read_input(opt, part_of(progress, 0.0, kMeshShare));
   const double mesh_seconds = seconds_since(start);
-  const SpaceChoice space = choose_space(opt.space, opt.method, in.mesh);
-  // Progress once the run is long enough to wonder about; a quick run's stderr stays empty.
-  if (mesh_seconds > 1.0)
-    std::cerr << in.mesh.num_cells() << " cells (" << mesh_seconds << " s); solving " << opt.kind
-              << " (" << space.name() << ")\n";
+  const SpaceChoice space = choose_space(opt.space, in.default_space, in.mesh);
+  const Progress solving = part_of(progress, kMeshShare, kWriteStart,
+                                   "solving " + opt.kind + " (" + space.name() + "): ");
 
   Index dofs = 0;
   fem::LinearSolveReport report;
@@ -98,14 +125,17 @@ int run_solve(const SolveOptions& opt) {
     if (elasticity) {
       fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
       if (in.own_boundary) problem.to_true_boundary = nullptr;
-      const fem::VectorSolution s = solve_vector(in.mesh, problem, space);
+      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       fields = vector_fields(in.mesh, s, problem);
     } else {
       fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
       if (in.own_boundary) problem.to_true_boundary = nullptr;
-      if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
-      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space);
+      if (!warning.empty()) {
+        progress_line.clear();
+        std::cerr << "warning: " << warning << "\n";
+      }
+      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       fields = scalar_fields(in.mesh, s, problem);
     }
@@ -114,8 +144,10 @@ int run_solve(const SolveOptions& opt) {
     throw InputError(opt.mesh + ": " + e.what());
   }
   const Clock::time_point writing = Clock::now();
+  progress_line("writing " + opt.output, kWriteStart);
   write_mesh(in.mesh, opt.output, fields);
   const double write_seconds = seconds_since(writing);
+  progress_line.clear();
 
   if (opt.json) {
     nlohmann::json j{{"problem", opt.problem.label()},
@@ -178,15 +210,18 @@ Command add_solve_command(CLI::App& root) {
   exact->excludes(problem);
   source->excludes(problem);
   CLI::Option* mesh = app->add_option("--mesh", opt->mesh, "mesh to solve on (.vtu .msh DIR.foam)");
-  CLI::Option* method = app->add_option("--method", opt->method, "mesh the domain: staircase, cutcell, grid")
-                            ->check(CLI::IsMember(study_methods()));
+  CLI::Option* method = app->add_option("--method", opt->method,
+                                        "mesh the domain: " + meshers::mesher_names())
+                            ->check(CLI::IsMember(mesher_names()));
   CLI::Option* level = app->add_option("--level", opt->level, "octree depth, the same inside as at the boundary, as in a study (grid: 2^level "
                                           "cells per side)")
                            ->check(CLI::Range(0, 20));
   app->add_option("--domain", opt->domain,
-                  "domain (builtin:NAME, surface, image, .json); with --mesh: the true boundary "
-                  "the boundary data are evaluated on (default: the mesh's own boundary)");
-  app->add_flag("--tets", opt->tets, "grid: the Kuhn split into tetrahedra");
+                  "domain (builtin:NAME, surface, image, .json; default: the method's, " +
+                      default_domains() +
+                      "); with --mesh: the true boundary the boundary data are evaluated on "
+                      "(default: the mesh's own boundary)");
+  add_mesher_options(*app, opt->given, false);
   app->add_option("--space", opt->space,
                   "p1, p2, q1, polyhedral, or fv (default: polyhedral for octree methods, p1 "
                   "for tets, q1 for hexes)");
@@ -199,6 +234,7 @@ Command add_solve_command(CLI::App& root) {
           },
           "FILE.vtu"));
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);
   method->needs(level);
   level->needs(method);

@@ -1,12 +1,13 @@
 // volmesh study convergence --problem P (--method M | --methods a,b) --levels A..B
-//   [--space S] [--domain D] [--tets] -o dir [--json]
+//   [--space S] [--domain D] [method options, e.g. --tets] -o dir [--json] [--quiet]
 // Meshes and solves each level, prints the table with pairwise rates and least-squares
 // slopes, and writes dir/convergence.csv, dir/convergence.png and dir/summary.json.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <iostream>
 
 #include "commands.hpp"
+#include "mesher_cli.hpp"
+#include "progress_line.hpp"
 #include "study_run.hpp"
 #include "volmesh/core/errors.hpp"
 
@@ -17,18 +18,19 @@ namespace {
 struct StudyOptions {
   StudySpec spec;
   std::string levels, output;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 int run_study_command(StudyOptions opt) {
+  for (const std::string& method : opt.spec.methods)
+    if (!options_apply("study convergence", meshers::find_mesher(method), opt.spec.options))
+      return 2;
   std::tie(opt.spec.first_level, opt.spec.last_level) = parse_levels(opt.levels);
-  // Progress once the run is long enough to wonder about: a quick failure stays one line.
-  const auto start = std::chrono::steady_clock::now();
-  const StudyOutcome outcome = run_study(opt.spec, [start](const std::string& line) {
-    if (std::chrono::steady_clock::now() - start > std::chrono::seconds(1))
-      std::cerr << line << "\n";
-  });
+  ProgressLine progress("study", opt.quiet);
+  const StudyOutcome outcome = run_study(opt.spec, progress.progress());
+  progress("writing " + opt.output, 1.0);
   write_study_outputs(opt.output, outcome);
+  progress.clear();
   if (opt.json) {
     std::cout << study_summary(outcome).dump(2) << "\n";
     return 0;
@@ -63,25 +65,26 @@ Command add_study_command(CLI::App& root) {
   source->excludes(problem);
   CLI::Option* method = app->add_option_function<std::string>(
       "--method", [opt](const std::string& m) { opt->spec.methods = {m}; },
-      "mesher: staircase, cutcell, grid");
-  method->check(CLI::IsMember(study_methods()));
+      "mesher: " + meshers::mesher_names());
+  method->check(CLI::IsMember(mesher_names()));
   CLI::Option* methods = app->add_option("--methods", opt->spec.methods,
                                          "several methods compared in one table and plot, "
                                          "e.g. staircase,cutcell")
                              ->delimiter(',')
-                             ->check(CLI::IsMember(study_methods()));
+                             ->check(CLI::IsMember(mesher_names()));
   method->excludes(methods);
-  app->add_option("--levels", opt->levels, "levels A..B (octree depth; grid: 2^level cells "
-                                           "per side)")
+  app->add_option("--levels", opt->levels, "levels A..B (octree depth, the same inside as at "
+                                           "the boundary; grid: 2^level cells per side)")
       ->required();
   app->add_option("--domain", opt->spec.domain,
-                  "domain (default builtin:ball; builtin:box for grid)");
+                  "domain (default: the method's, " + default_domains() + ")");
   app->add_option("--space", opt->spec.space,
                   "p1, p2, q1, polyhedral, fv (default: polyhedral for octree methods, p1 for "
                   "tets, q1 for hexes)");
-  app->add_flag("--tets", opt->spec.tets, "grid: the Kuhn split into tetrahedra");
+  add_mesher_options(*app, opt->spec.options, false);
   app->add_option("-o,--output", opt->output, "output directory")->required();
   app->add_flag("--json", opt->json, "print the summary as one JSON object on stdout");
+  add_quiet_flag(*app, opt->quiet);
   app->footer(
       "Examples:\n"
       "  volmesh study convergence --problem sine --methods staircase,cutcell --levels 3..6 "

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/meshers/registry.hpp"
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -30,7 +31,8 @@ void keep_freed_memory() {
 int main(int argc, char** argv) {
   using namespace volmesh;
   keep_freed_memory();
-  CLI::App app{"volmesh — octree cut-cell, hex and tet meshing, checking and export"};
+  CLI::App app{"volmesh — volume meshing (" + meshers::mesher_names() +
+               "), checking, partitioning, Poisson and elasticity solves, export"};
   app.set_version_flag("--version", std::string("volmesh ") + VOLMESH_VERSION);
   app.require_subcommand(1);
   app.footer(R"(Examples:

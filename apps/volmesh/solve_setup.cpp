@@ -1,56 +1,15 @@
 #include "solve_setup.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "volmesh/core/boundary.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/core/structured.hpp"
-#include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/surface_domain.hpp"
 #include "volmesh/fem/finite_volume.hpp"
-#include "volmesh/octree/staircase.hpp"
 
 namespace volmesh::cli {
 
 namespace {
-
-bool is_octree_method(const std::string& method) {
-  return method == "staircase" || method == "cutcell";
-}
-
-OctreeOptions octree_options(int level, bool uniform) {
-  OctreeOptions o;
-  o.level = level;
-  if (uniform) o.base_level = level;
-  return o;
-}
-
-double octree_cell_size(const Domain& domain, const OctreeOptions& o) {
-  return std::ldexp(octree_root(domain, o).side, -o.level);
-}
-
-// The grid of `volmesh mesh grid`: 2^level cells along each side of the bounding box. Only
-// a domain that fills its box is meshed exactly by it (its corners, pulled slightly inward,
-// are inside).
-LevelMesh grid_mesh(const Domain& domain, const std::string& domain_name, int level, bool tets) {
-  if (level < 0 || level > 10)
-    throw InputError("grid: --level " + std::to_string(level) + " is out of range (0 to 10)");
-  const Box3 box = domain.bounds();
-  for (int k = 0; k < 8; ++k) {
-    const Vec3 t((k & 1) ? 0.999 : 0.001, (k >> 1 & 1) ? 0.999 : 0.001, (k >> 2 & 1) ? 0.999 : 0.001);
-    if (domain.region(box.lo + t.cwiseProduct(box.size())) == 0)
-      throw InputError("grid: " + domain_name +
-                       " does not fill its bounding box; the grid meshes boxes only");
-  }
-  const Index n = Index{1} << level;
-  const std::array<Index, 3> cells{n, n, n};
-  PolyMesh mesh = tets ? to_poly_mesh(kuhn_tet_mesh(box.lo, box.hi, cells))
-                       : to_poly_mesh(structured_hex_mesh(box.lo, box.hi, cells));
-  return {std::move(mesh), box.size().maxCoeff() / n};
-}
 
 // The mesh's boundary as a surface domain, reporting the mesh's regions.
 class MeshDomain final : public Domain {
@@ -78,42 +37,14 @@ class MeshDomain final : public Domain {
 
 }  // namespace
 
-const std::vector<std::string>& study_methods() {
-  static const std::vector<std::string> methods{"staircase", "cutcell", "grid"};
-  return methods;
-}
-
-std::string default_domain(const std::string& method) {
-  return method == "grid" ? "builtin:box" : "builtin:ball";
-}
-
-LevelMesh mesh_at_level(const std::string& method, const Domain& domain,
-                        const std::string& domain_name, int level, bool tets,
-                        bool uniform) {
-  if (method == "grid") return grid_mesh(domain, domain_name, level, tets);
-  if (!is_octree_method(method))
-    throw InputError("--method " + method + ": unknown (staircase, cutcell, grid)");
-  if (tets) throw InputError("--tets: only for --method grid");
-  if (method == "staircase") {
-    StaircaseOptions options;
-    options.octree = octree_options(level, uniform);
-    PolyMesh mesh = staircase_mesh(domain, options);
-    return {std::move(mesh), octree_cell_size(domain, options.octree)};
-  }
-  CutcellOptions options;
-  options.octree = octree_options(level, uniform);
-  PolyMesh mesh = cutcell_mesh(domain, options);
-  return {std::move(mesh), octree_cell_size(domain, options.octree)};
-}
-
-SpaceChoice choose_space(const std::string& requested, const std::string& method,
+SpaceChoice choose_space(const std::string& requested, const std::string& default_space,
                          const PolyMesh& mesh) {
   if (requested == "fv") return {};
   if (!requested.empty()) {
     if (const auto s = fem::space_from_name(requested)) return {*s};
     throw InputError("--space " + requested + ": unknown (p1, p2, q1, polyhedral, fv)");
   }
-  if (is_octree_method(method)) return {fem::Space::polyhedral};
+  if (!default_space.empty()) return choose_space(default_space, "", mesh);
   const CellFaces cell_faces = build_cell_faces(mesh);
   bool tets = mesh.num_cells() > 0, hexes = mesh.num_cells() > 0;
   for (Index c = 0; c < mesh.num_cells() && (tets || hexes); ++c) {
@@ -150,16 +81,20 @@ fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain&
 }
 
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space) {
-  if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe);
-  return fem::solve_poisson_fv(mesh, problem, fem::LinearSolverOptions{});
+                                 const SpaceChoice& space, const Progress& progress) {
+  fem::LinearSolverOptions options;
+  options.progress = progress;
+  if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe, options);
+  return fem::solve_poisson_fv(mesh, problem, options);
 }
 
 fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProblem& problem,
-                                 const SpaceChoice& space) {
+                                 const SpaceChoice& space, const Progress& progress) {
   if (!space.fe)
     throw InputError("--space fv: finite volumes solve Poisson problems only");
-  return fem::solve_elasticity(mesh, problem, *space.fe);
+  fem::LinearSolverOptions options;
+  options.progress = progress;
+  return fem::solve_elasticity(mesh, problem, *space.fe, options);
 }
 
 MeshFields scalar_fields(const PolyMesh& mesh, const fem::ScalarSolution& solution,

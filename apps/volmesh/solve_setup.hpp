@@ -1,12 +1,13 @@
 #pragma once
-// What `solve`, `study` and `demo` share: a domain meshed by a method at a level, the space a
-// mesh is solved in, the problem (named, or given as expressions) and the solve itself.
+// What `solve`, `study` and `demo` share: the space a mesh is solved in, the problem (named,
+// or given as expressions) and the solve itself.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/core/progress.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/fem/fem.hpp"
 #include "volmesh/fem/problems.hpp"
@@ -14,30 +15,15 @@
 
 namespace volmesh::cli {
 
-// The methods `solve --method` and `study` mesh with: "staircase" and "cutcell" (octree
-// depth `level` at the boundaries and interfaces, h = root edge / 2^level; `uniform`: the
-// same depth inside too, as a study needs — a coarser interior would stop the rate), "grid"
-// (2^level Cartesian hexes per side of a box, or with `tets` their Kuhn split).
-struct LevelMesh {
-  PolyMesh mesh;
-  double h = 0.0;
-};
-const std::vector<std::string>& study_methods();
-// Throws InputError for an unknown method, and for `tets` with an octree method.
-LevelMesh mesh_at_level(const std::string& method, const Domain& domain,
-                        const std::string& domain_name, int level, bool tets,
-                        bool uniform = true);
-// builtin:box for grids, builtin:ball otherwise.
-std::string default_domain(const std::string& method);
-
 // A finite-element space or the cell-centred finite volumes ("fv", Poisson only).
 struct SpaceChoice {
   std::optional<fem::Space> fe;  // empty: finite volumes
   std::string name() const { return fe ? fem::space_name(*fe) : "fv"; }
 };
-// `requested` empty: polyhedral for octree methods (or a mesh with other cells), p1 for a
-// mesh of tets, q1 for a mesh of hexes. Throws InputError for an unknown name.
-SpaceChoice choose_space(const std::string& requested, const std::string& method,
+// `requested` empty: the mesher's default space (MesherInfo::default_space) if it has one;
+// otherwise p1 for a mesh of tets, q1 for a mesh of hexes, polyhedral for any other. Throws
+// InputError for an unknown name.
+SpaceChoice choose_space(const std::string& requested, const std::string& default_space,
                          const PolyMesh& mesh);
 
 // --problem NAME, or a user's case from --exact/--source/--k (Poisson only).
@@ -59,10 +45,10 @@ fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain&
                                           const PolyMesh& mesh);
 
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space);
+                                 const SpaceChoice& space, const Progress& progress = {});
 // Throws InputError for finite volumes (Poisson only).
 fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProblem& problem,
-                                 const SpaceChoice& space);
+                                 const SpaceChoice& space, const Progress& progress = {});
 
 // What a VTU shows of a solution. Poisson: point data "u" (cell data for finite volumes,
 // whose unknowns live in the cells) and "error" = u_h − u where the problem has an exact

@@ -41,19 +41,25 @@ void write_file_atomically(const fs::path& path, const char* data, std::size_t s
   }
 }
 
-std::string series_label(const std::string& method, bool tets, const SpaceChoice& space) {
-  return (method == "grid" && tets ? std::string("grid tets") : method) + " (" + space.name() + ")";
+// The method with the options given to it: "grid tets", "cutcell interface-points midpoint".
+std::string series_name(const std::string& method, const meshers::MethodOptions& options) {
+  std::string name = method;
+  for (const auto& [option, value] : options)
+    name += " " + meshers::option_text(option, value).substr(std::string_view("--").size());
+  return name;
 }
 
 fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
-                            const PolyMesh& mesh, const SpaceChoice& space) {
+                            const PolyMesh& mesh, const SpaceChoice& space,
+                            const Progress& progress) {
   fem::LevelSolve out;
   if (kind == fem::ProblemKind::elasticity) {
     const fem::VectorSolution s =
-        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space);
+        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space, progress);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   } else {
-    const fem::ScalarSolution s = solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space);
+    const fem::ScalarSolution s =
+        solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space, progress);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   }
   return out;
@@ -80,7 +86,7 @@ std::pair<int, int> parse_levels(const std::string& text) {
   return {first, last};
 }
 
-StudyOutcome run_study(const StudySpec& spec, const fem::StudyProgress& progress) {
+StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   if (spec.first_level > spec.last_level)
     throw InputError("levels " + std::to_string(spec.first_level) + ".." +
@@ -88,28 +94,43 @@ StudyOutcome run_study(const StudySpec& spec, const fem::StudyProgress& progress
   const fem::ProblemKind kind = problem_kind(spec.problem);
   if (spec.problem.user() && spec.problem.exact.empty())
     throw InputError("--source without --exact: a study needs the exact solution");
+  std::vector<const meshers::MesherInfo*> methods;
+  for (const std::string& name : spec.methods) {
+    methods.push_back(&meshers::find_mesher(name));
+    meshers::check_options(*methods.back(), spec.options);
+  }
   const std::string domain_spec =
-      spec.domain.empty() ? default_domain(spec.methods.front()) : spec.domain;
+      spec.domain.empty() ? methods.front()->default_domain : spec.domain;
   const std::unique_ptr<Domain> domain = open_domain(domain_spec);
   StudyOutcome outcome;
   outcome.problem = spec.problem.label();
   outcome.domain = domain_display_name(domain_spec);
-  for (const std::string& method : spec.methods) {
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    const meshers::MesherInfo& method = *methods[m];
+    const std::string name = series_name(method.name, spec.options);
     // The space follows from the first level's mesh; every level has the same cell kinds.
     std::optional<SpaceChoice> space;
-    const fem::MeshAtLevel mesh = [&](int level) {
-      LevelMesh m = mesh_at_level(method, *domain, outcome.domain, level, spec.tets);
-      if (!space) space = choose_space(spec.space, method, m.mesh);
-      return fem::StudyMesh{std::move(m.mesh), m.h};
+    const fem::MeshAtLevel mesh = [&](int level, const Progress& meshing) {
+      meshers::MeshRequest request;
+      request.domain_name = outcome.domain;
+      request.level = level;
+      request.uniform = true;
+      request.options = spec.options;
+      request.progress = meshing;
+      meshers::MeshResult r = meshers::mesh(method, *domain, request);
+      if (!space) space = choose_space(spec.space, method.default_space, r.mesh);
+      return fem::StudyMesh{std::move(r.mesh), r.h};
     };
-    const fem::SolveOnMesh solve = [&](const PolyMesh& m) {
-      return solve_level(spec, kind, *domain, m, *space);
+    const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {
+      return solve_level(spec, kind, *domain, m, *space, solving);
     };
-    // The label names the space, known once the first mesh exists.
+    const double share = 1.0 / static_cast<double>(methods.size());
     fem::ConvergenceSeries s = fem::run_convergence_study(
-        method, spec.first_level, spec.last_level, mesh, solve, progress);
-    s.label = series_label(method, spec.tets, *space);
-    outcome.methods.push_back(method);
+        method.name, spec.first_level, spec.last_level, mesh, solve,
+        part_of(progress, m * share, (m + 1) * share, name + " "));
+    // The label names the space, known once the first mesh exists.
+    s.label = name + " (" + space->name() + ")";
+    outcome.methods.push_back(method.name);
     outcome.spaces.push_back(space->name());
     outcome.series.push_back(std::move(s));
   }

@@ -10,6 +10,7 @@
 
 #include "solve_setup.hpp"
 #include "volmesh/fem/study.hpp"
+#include "volmesh/meshers/registry.hpp"
 #include "volmesh/plot/loglog_png.hpp"
 
 namespace volmesh::cli {
@@ -17,9 +18,9 @@ namespace volmesh::cli {
 struct StudySpec {
   ProblemSpec problem;
   std::vector<std::string> methods;  // one series each
-  std::string domain;                // empty: default_domain of the first method
+  std::string domain;                // empty: the first method's default domain
   std::string space;                 // empty: the method's default
-  bool tets = false;
+  meshers::MethodOptions options;    // given to every method
   int first_level = 0, last_level = 0;
 };
 
@@ -33,8 +34,9 @@ struct StudyOutcome {
 // "A..B" (or "N" for one level). Throws InputError for anything else or A > B.
 std::pair<int, int> parse_levels(const std::string& text);
 
-// Progress lines go to `progress`.
-StudyOutcome run_study(const StudySpec& spec, const fem::StudyProgress& progress);
+// Every method meshes in the uniform mode (the same depth inside as at the boundary). Throws
+// InputError for an unknown method or an option one of them does not take.
+StudyOutcome run_study(const StudySpec& spec, const Progress& progress);
 
 // Error against h, one line per series and norm (colour per method when several, marker per
 // norm), reference slopes 1 and 2.

@@ -106,6 +106,7 @@ VectorSolution solve_elasticity(const PolyMesh& mesh, const ElasticityProblem& p
 
   // Mean stresses and error integrals, per cell in parallel, summed in cell order. The
   // stiffness rule integrates σ(u_h) exactly; the degree-5 rule is for the errors.
+  volmesh::report(options.progress, "results", detail::kResultsStart);
   const std::vector<CellResult> cells = detail::integrate_cells<3, CellResult>(
       field, problem.exact ? Rule::accurate : Rule::stiffness,
       [&](Index c, const Vec3& x, double w, const detail::PointValue<3>& v, CellResult& r) {

@@ -70,6 +70,7 @@ ScalarSolution solve_poisson(const PolyMesh& mesh, const PoissonProblem& problem
 
   // Cell means and error integrals, per cell in parallel, summed in cell order. The stiffness
   // rule integrates u_h exactly; the degree-5 rule is for the errors.
+  volmesh::report(options.progress, "results", detail::kResultsStart);
   const std::vector<CellResult> cells = detail::integrate_cells<1, CellResult>(
       field, problem.exact ? Rule::accurate : Rule::stiffness,
       [&](Index, const Vec3& x, double w, const detail::PointValue<1>& v, CellResult& r) {

@@ -19,6 +19,10 @@ namespace volmesh::fem::detail {
 template <int C>
 using NodeVector = Eigen::Matrix<double, C, 1>;
 
+// Where the stages of a solve start, as rough fractions of its run (LinearSolverOptions::progress).
+inline constexpr double kLinearSolveStart = 0.5;
+inline constexpr double kResultsStart = 0.9;
+
 // A condition's value as C numbers.
 inline NodeVector<1> as_node_vector(double v) { return NodeVector<1>(v); }
 inline NodeVector<3> as_node_vector(const Vec3& v) { return v; }
@@ -123,6 +127,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
                         std::chrono::steady_clock::time_point start, LinearSolveReport& report) {
   const TagConditions<Condition> conditions =
       split_conditions(mesh, boundary);
+  volmesh::report(options.progress, "assembly", 0.0);
   SolvedField out;
   out.space = make_space(mesh, space_kind);
   const FeSpace& space = *out.space;
@@ -151,6 +156,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   }
   report.assembly_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  volmesh::report(options.progress, "linear solve", kLinearSolveStart);
   out.u = solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options, report);
   return out;
 }

@@ -16,6 +16,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Where the stages start, as rough fractions of the run (LinearSolverOptions::progress).
+constexpr double kLinearSolveStart = 0.3;
+constexpr double kCorrectionStart = 0.4;
+constexpr double kResultsStart = 0.9;
+
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -61,6 +66,7 @@ ScalarSolution solve_poisson_fv(const PolyMesh& mesh, const PoissonProblem& prob
                                 const LinearSolverOptions& solver, const FvOptions& options,
                                 FvReport* report) {
   const auto start = Clock::now();
+  volmesh::report(solver.progress, "assembly", 0.0);
   const FvSystem s = build_fv_system(mesh, problem, options.non_orthogonal_correction);
   const Eigen::SparseMatrix<double> a = fv_matrix(mesh, s);
   const auto a_times = [&a](const Eigen::VectorXd& v) -> Eigen::VectorXd {
@@ -86,6 +92,7 @@ ScalarSolution solve_poisson_fv(const PolyMesh& mesh, const PoissonProblem& prob
     inner.kind = LinearSolverOptions::Kind::cg;
     inner.tolerance = std::min(solver.tolerance, options.correction_tolerance);
   }
+  volmesh::report(solver.progress, "linear solve", kLinearSolveStart);
   Eigen::VectorXd u = solve_counted(a, base, inner, total);
   // The corrected equations A u = b + K u + k (K u + k: the correction fluxes of u's
   // gradients) preconditioned by the two-point matrix: (I − A⁻¹K) u = A⁻¹(b + k). Plain
@@ -93,6 +100,7 @@ ScalarSolution solve_poisson_fv(const PolyMesh& mesh, const PoissonProblem& prob
   // cut cells its iteration matrix A⁻¹K has eigenvalues beyond 1 (measured: −1.25 on a plane
   // cut through an 8³ grid) and it diverges, so GMRES accelerates it.
   if (s.non_orthogonal) {
+    volmesh::report(solver.progress, "non-orthogonal correction", kCorrectionStart);
     const LinearMap defect = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
       const Eigen::VectorXd rhs = base + fv_correction(mesh, s, fv_gradients(mesh, s, v));
       return solve_counted(a, rhs - a_times(v), inner, total);
@@ -109,6 +117,7 @@ ScalarSolution solve_poisson_fv(const PolyMesh& mesh, const PoissonProblem& prob
     if (!std::isfinite(g.relative))
       throw std::runtime_error("finite volumes: the non-orthogonal correction diverged");
   }
+  volmesh::report(solver.progress, "results", kResultsStart);
   const std::vector<Vec3> gradients = fv_gradients(mesh, s, u);
   Eigen::VectorXd rhs = base;
   if (s.non_orthogonal) rhs += fv_correction(mesh, s, gradients);

@@ -15,12 +15,12 @@ namespace {
 
 TEST(StudyGrid, P1OnTetGridsIsSecondOrderInL2) {
   const std::unique_ptr<Domain> box = make_builtin_domain("box");
-  const MeshAtLevel mesh = [](int level) {
+  const MeshAtLevel mesh = [](int level, const Progress&) {
     const Index n = Index{1} << level;
     return StudyMesh{to_poly_mesh(kuhn_tet_mesh(Vec3::Zero(), Vec3::Ones(), {n, n, n})),
                      1.0 / n};
   };
-  const SolveOnMesh solve = [&](const PolyMesh& m) {
+  const SolveOnMesh solve = [&](const PolyMesh& m, const Progress&) {
     const ScalarSolution s =
         solve_poisson(m, make_poisson_problem("sine", *box, m.tag_names), Space::p1);
     return LevelSolve{s.dofs, s.solve, s.errors};

@@ -72,11 +72,11 @@ ConvergenceSeries synthetic_series(const std::string& label, double order, int f
   Index dofs = 0;
   return run_convergence_study(
       label, first, last,
-      [&](int level) {
+      [&](int level, const Progress&) {
         h = std::ldexp(1.0, -level);
         return StudyMesh{PolyMesh{}, h};
       },
-      [&](const PolyMesh&) {
+      [&](const PolyMesh&, const Progress&) {
         LevelSolve s;
         s.dofs = dofs += 100;
         ErrorNorms e;
@@ -105,11 +105,11 @@ TEST(StudyDriver, RunsEachLevelInOrderAndMeasuresRates) {
 
 TEST(StudyDriver, RefusesReversedLevelsAndProblemsWithoutExactSolution) {
   int meshes = 0;
-  const MeshAtLevel mesh = [&](int) {
+  const MeshAtLevel mesh = [&](int, const Progress&) {
     ++meshes;
     return StudyMesh{PolyMesh{}, 1.0};
   };
-  const SolveOnMesh no_errors = [](const PolyMesh&) { return LevelSolve{}; };
+  const SolveOnMesh no_errors = [](const PolyMesh&, const Progress&) { return LevelSolve{}; };
   EXPECT_THROW(run_convergence_study("x", 5, 3, mesh, no_errors), InputError);
   EXPECT_EQ(meshes, 0);
   try {

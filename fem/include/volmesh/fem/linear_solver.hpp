@@ -6,6 +6,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "volmesh/core/progress.hpp"
 #include "volmesh/fem/solution.hpp"
 
 namespace volmesh::fem {
@@ -20,6 +21,10 @@ struct LinearSolverOptions {
   Index direct_limit = 1000;
   double tolerance = 1e-10;     // on ‖b − Ax‖ / ‖b‖
   int max_iterations = 20000;
+  // The solves that take these options (solve_poisson, solve_elasticity, solve_poisson_fv)
+  // report their stages here ("assembly", "linear solve", "results": the cell values and
+  // errors) with rough fractions of their run; solve_spd ignores it.
+  Progress progress;
 };
 
 // Only the lower triangle of `a` is read, so a full symmetric matrix and its lower half give

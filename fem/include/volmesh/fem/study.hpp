@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/core/progress.hpp"
 #include "volmesh/fem/solution.hpp"
 
 namespace volmesh::fem {
@@ -61,17 +62,19 @@ struct LevelSolve {
   LinearSolveReport solve;
   std::optional<ErrorNorms> errors;
 };
-using MeshAtLevel = std::function<StudyMesh(int level)>;
-using SolveOnMesh = std::function<LevelSolve(const PolyMesh&)>;
-using StudyProgress = std::function<void(const std::string& line)>;  // one line, no newline
+// Each reports its own stages to the Progress it is given.
+using MeshAtLevel = std::function<StudyMesh(int level, const Progress& progress)>;
+using SolveOnMesh = std::function<LevelSolve(const PolyMesh& mesh, const Progress& progress)>;
 
 // Meshes and solves levels first..last in order, keeping only the figures (each mesh is
-// dropped before the next level is made). Throws InputError when first > last or a solve
-// reports no errors (the problem has no exact solution to measure against).
+// dropped before the next level is made). `progress` gets the mesher's and the solver's
+// stages as "level N: meshing: <stage>" and "level N: solving C cells: <stage>", with the
+// fraction of the levels done. Throws InputError when first > last or a solve reports no
+// errors (the problem has no exact solution to measure against).
 ConvergenceSeries run_convergence_study(const std::string& label, int first_level,
                                         int last_level, const MeshAtLevel& mesh_at_level,
                                         const SolveOnMesh& solve_on_mesh,
-                                        const StudyProgress& progress = {});
+                                        const Progress& progress = {});
 
 // One row per series and level: series,level,h,cells,dofs,l2,linf,h1,rate_l2,rate_linf,rate_h1
 // (rates against the previous level, empty on a series' first row). No timings: the same

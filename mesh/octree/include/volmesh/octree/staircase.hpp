@@ -2,10 +2,8 @@
 // The staircase mesher (DESIGN.md §4): the octree refined toward the boundaries and
 // interfaces, each leaf kept as a cube when its centre lies in a region (region 0 dropped).
 // The first-order baseline the cut-cell convergence studies compare against.
-#include <functional>
-#include <string>
-
 #include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/core/progress.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/octree/octree.hpp"
 
@@ -15,7 +13,7 @@ struct StaircaseOptions {
   OctreeOptions octree;
   // Called from the calling thread as each stage starts ("octree", "cells", then "done"),
   // with a rough fraction of the run done.
-  std::function<void(const std::string& stage, double fraction)> progress;
+  Progress progress;
 };
 
 struct StaircaseStats {
