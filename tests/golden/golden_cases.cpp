@@ -1,12 +1,11 @@
 #include "golden_cases.hpp"
 
-#include <stdexcept>
+#include <cstdint>
 
-#include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/open_domain.hpp"
 #include "volmesh/fem/fem.hpp"
 #include "volmesh/fem/problems.hpp"
-#include "volmesh/octree/staircase.hpp"
+#include "volmesh/meshers/registry.hpp"
 
 namespace volmesh::golden {
 
@@ -15,12 +14,12 @@ namespace volmesh::golden {
 const std::vector<GoldenCase>& golden_cases() {
   static const std::vector<GoldenCase> cases{
       {"cutcell-ball-4", "cutcell", "builtin:ball", 4, {}, ""},
-      {"cutcell-ball-midpoint-4", "cutcell", "builtin:ball", 4, {{"interface-points", "midpoint"}}, ""},
+      {"cutcell-ball-midpoint-4", "cutcell", "builtin:ball", 4, {{"interface-points", std::string("midpoint")}}, ""},
       {"cutcell-primitives-3", "cutcell", "builtin:primitives", 3, {}, ""},
       {"cutcell-layers6-3", "cutcell", "builtin:layers6", 3, {}, ""},
       {"cutcell-tetra-4", "cutcell", "data:surfaces/tetra_ascii.ply", 4, {}, ""},
       {"staircase-ball-5", "staircase", "builtin:ball", 5, {}, ""},
-      {"staircase-ball-uniform-4", "staircase", "builtin:ball", 4, {{"base-level", "4"}}, ""},
+      {"staircase-ball-uniform-4", "staircase", "builtin:ball", 4, {{"base-level", std::int64_t{4}}}, ""},
       {"staircase-primitives-4", "staircase", "builtin:primitives", 4, {}, ""},
       {"staircase-layers6-4", "staircase", "builtin:layers6", 4, {}, ""},
       {"staircase-tetra-5", "staircase", "data:surfaces/tetra_ascii.ply", 5, {}, ""},
@@ -36,33 +35,12 @@ std::unique_ptr<Domain> open_case_domain(const GoldenCase& c) {
   return open_domain(c.domain);
 }
 
-// The meshers as apps/volmesh/solve_setup.cpp calls them; the one place the golden cases
-// name them.
 PolyMesh mesh_case(const GoldenCase& c, const Domain& domain) {
-  OctreeOptions octree;
-  octree.level = c.level;
-  InterfacePoints interface_points = InterfacePoints::exact;
-  for (const auto& [name, value] : c.options) {
-    if (name == "base-level") {
-      octree.base_level = std::stoi(value);
-    } else if (name == "interface-points" && c.method == "cutcell" && (value == "exact" || value == "midpoint")) {
-      interface_points = value == "exact" ? InterfacePoints::exact : InterfacePoints::midpoint;
-    } else {
-      throw std::invalid_argument(c.name + ": " + c.method + " takes no option " + name + " " + value);
-    }
-  }
-  if (c.method == "staircase") {
-    StaircaseOptions options;
-    options.octree = octree;
-    return staircase_mesh(domain, options);
-  }
-  if (c.method == "cutcell") {
-    CutcellOptions options;
-    options.octree = octree;
-    options.interface_points = interface_points;
-    return cutcell_mesh(domain, options);
-  }
-  throw std::invalid_argument(c.name + ": unknown method " + c.method);
+  meshers::MeshRequest request;
+  request.domain_name = c.domain;
+  request.level = c.level;
+  request.options = c.options;
+  return meshers::mesh(meshers::find_mesher(c.method), domain, request).mesh;
 }
 
 fem::ScalarSolution solve_case(const GoldenCase& c, const Domain& domain, const PolyMesh& mesh) {

@@ -2,27 +2,25 @@
 // The golden regression cases: small meshes of every mesher and one Poisson solve per
 // mesher, each summarised (golden_summary.hpp) and compared with the summary stored in
 // tests/golden/expected/<name>.json. regenerate.sh rewrites the stored summaries on purpose.
-#include <string>
-#include <utility>
-#include <vector>
-
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/fem/solution.hpp"
+#include "volmesh/meshers/options.hpp"
 
 namespace volmesh::golden {
 
 struct GoldenCase {
   std::string name;    // the stored summary's file name, without .json
-  std::string method;  // a mesher: "cutcell" or "staircase"
+  std::string method;  // a mesher of the registry (volmesh/meshers/registry.hpp)
   // open_domain's argument; "data:" stands for the tests' data directory (tests/data), so
   // that the stored summary names no absolute path.
   std::string domain;
   int level;
-  // Mesher options by their command-line names (without "--"), with their values.
-  std::vector<std::pair<std::string, std::string>> options;
+  meshers::MethodOptions options;  // by their command-line names, without "--"
   std::string problem;  // a Poisson problem of the library solved on the mesh, or empty
 };
 
@@ -32,8 +30,8 @@ const std::vector<GoldenCase>& golden_cases();
 // The case's domain ("data:" resolved).
 std::unique_ptr<Domain> open_case_domain(const GoldenCase& c);
 
-// The case's mesh, from the library's mesher. Throws std::invalid_argument for a method or
-// an option it does not know.
+// The case's mesh, from the mesher registry as `volmesh mesh` meshes. Throws InputError for
+// a method or an option it does not know.
 PolyMesh mesh_case(const GoldenCase& c, const Domain& domain);
 
 // The case's problem solved on the mesh in the space `volmesh solve` picks for an octree

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 #include <span>
+#include <variant>
 
 #include "volmesh/core/validity.hpp"
 #include "volmesh/quality/report.hpp"
@@ -137,7 +138,8 @@ std::string canonical_hash(const PolyMesh& mesh) {
 
 json case_summary(const GoldenCase& c, const PolyMesh& mesh, const fem::ScalarSolution* solution) {
   json options = json::object();
-  for (const auto& [name, value] : c.options) options[name] = value;
+  for (const auto& [name, value] : c.options)
+    std::visit([&options, &name](const auto& v) { options[name] = v; }, value);
   json j = {{"case", c.name},
             {"method", c.method},
             {"domain", c.domain},
