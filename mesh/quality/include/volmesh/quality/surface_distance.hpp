@@ -108,7 +108,8 @@ struct SurfaceDistance {
 
 // The mesh's faces are split into triangles as boundary_surface does (polygons around their
 // vertex average). Throws std::invalid_argument for a tolerance <= 0 or a mesh without the
-// faces to measure. Both cores; the result does not depend on the thread count.
+// faces to measure. Sampling uses both cores, the subdivision one; the result does not
+// depend on the thread count.
 SurfaceDistance surface_distance(const PolyMesh& mesh, const ReferenceSurface& reference,
                                  const SurfaceDistanceOptions& options);
 
