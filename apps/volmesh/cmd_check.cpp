@@ -1,18 +1,21 @@
 // volmesh check <mesh> [--surface S] [--json]: validity, quality, and the distance of the
-// mesh boundary to a reference surface.
+// mesh boundary to a reference: a surface file, or an analytic domain's true surfaces.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
+#include <memory>
 
 #include "commands.hpp"
 #include "progress_line.hpp"
 #include "reports.hpp"
-#include "volmesh/core/boundary.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/quality/analytic_surfaces.hpp"
 #include "volmesh/quality/measurements.hpp"
 #include "volmesh/quality/report.hpp"
-#include "volmesh/quality/surface_distance.hpp"
 
 namespace volmesh::cli {
 
@@ -26,35 +29,77 @@ struct CheckOptions {
 // Where the steps start on the progress bar.
 constexpr double kValidityStart = 0.1, kQualityStart = 0.2, kDistanceStart = 0.4;
 
-// Relative accuracy of the reported Hausdorff distance, as a fraction of the diagonal.
+// Against a triangulated surface, the accuracy of the reported Hausdorff distance as a
+// fraction of the diagonal.
 constexpr double kHausdorffBound = 1e-6;
+// Against an analytic domain, samples this many times finer than the mean cell size (the
+// cell edge of a uniform octree mesh), as validation/geometry samples.
+constexpr double kSamplesPerCell = 6.0;
+
+// What the mesh is compared with: a surface file, or the true surfaces of an analytic domain.
+struct Reference {
+  std::unique_ptr<ReferenceSurface> surface;
+  double volume = 0.0;  // 0 where not known
+  double diagonal = 0.0;
+  SurfaceDistanceOptions options;
+};
+
+Reference open_reference(const std::string& spec, const ValidityReport& validity) {
+  Reference r;
+  if (is_surface_file(spec)) {
+    TriSurface surface = read_surface(spec);
+    r.volume = check_surface(surface, spec).volume;
+    r.diagonal = bounding_box(surface.points).diagonal();
+    r.options = {.tolerance = kHausdorffBound * r.diagonal, .interfaces = false};
+    r.surface = std::make_unique<TriangulatedSurface>(std::move(surface));
+    return r;
+  }
+  const std::unique_ptr<Domain> domain = open_domain(spec);
+  const auto* analytic = dynamic_cast<const AnalyticDomain*>(domain.get());
+  if (!analytic)
+    throw InputError(spec + ": not analytic: --surface takes a surface file (.stl .off .obj "
+                            ".ply) or an analytic domain (builtin:ball, a .json of solids)");
+  for (const auto& [region, volume] : exact_region_volumes(spec, *domain)) r.volume += volume;
+  r.diagonal = domain->bounds().size().norm();
+  const double cell = std::cbrt(std::abs(validity.total_volume) / static_cast<double>(validity.cells));
+  if (!(cell > 0.0))
+    throw InputError("--surface " + spec + ": the mesh has no volume to size the samples by");
+  r.options = {.tolerance = cell / kSamplesPerCell, .interfaces = true};
+  r.surface = std::make_unique<AnalyticSurfaces>(*analytic);
+  return r;
+}
 
 nlohmann::json surface_comparison(const PolyMesh& mesh, const ValidityReport& validity,
-                                  const std::string& path, bool json, ProgressLine& progress) {
-  progress("distance to " + path, kDistanceStart);
-  TriSurface surface = read_surface(path);
-  const SurfaceReport sr = check_surface(surface, path);
-  const double diagonal = bounding_box(surface.points).diagonal();
-  const HausdorffDistance d =
-      hausdorff_distance(boundary_surface(mesh), surface, kHausdorffBound * diagonal);
+                                  const std::string& spec, bool json, ProgressLine& progress) {
+  progress("distance to " + spec, kDistanceStart);
+  const Reference r = open_reference(spec, validity);
+  const bool sampled = r.surface->triangulation() == nullptr;
+  const TwoSidedDistance d = surface_distance(mesh, *r.surface, r.options).all;
   progress.clear();
-  const double volume_error = (validity.total_volume - sr.volume) / sr.volume;
+  const double volume_error = (validity.total_volume - r.volume) / r.volume;
   if (!json) {
-    std::cout << "against " << path << " (volume " << sr.volume << ", diagonal " << diagonal
-              << "):\n"
-              << "  volume error " << volume_error << " (relative)\n"
-              << "  Hausdorff distance " << d.symmetric() / diagonal
-              << " of the diagonal (mesh to surface " << d.from_a / diagonal
-              << ", surface to mesh " << d.from_b / diagonal << ")\n";
+    std::cout << "against " << spec << " (";
+    if (r.volume > 0.0) std::cout << "volume " << r.volume << ", ";
+    std::cout << "diagonal " << r.diagonal << "):\n";
+    if (r.volume > 0.0) std::cout << "  volume error " << volume_error << " (relative)\n";
+    std::cout << "  Hausdorff distance " << d.hausdorff() / r.diagonal
+              << " of the diagonal (mesh to surface " << d.mesh_to_surface.distance / r.diagonal
+              << ", surface to mesh " << d.surface_to_mesh.distance / r.diagonal << ")";
+    if (sampled) std::cout << ", samples " << r.options.tolerance << " apart";
+    std::cout << "\n";
   }
-  return {{"file", path},
-          {"surface_volume", sr.volume},
-          {"diagonal", diagonal},
-          {"volume_error", volume_error},
-          {"hausdorff", d.symmetric()},
-          {"hausdorff_relative", d.symmetric() / diagonal},
-          {"hausdorff_mesh_to_surface", d.from_a},
-          {"hausdorff_surface_to_mesh", d.from_b}};
+  nlohmann::json j{{"file", spec},
+                   {"diagonal", r.diagonal},
+                   {"hausdorff", d.hausdorff()},
+                   {"hausdorff_relative", d.hausdorff() / r.diagonal},
+                   {"hausdorff_mesh_to_surface", d.mesh_to_surface.distance},
+                   {"hausdorff_surface_to_mesh", d.surface_to_mesh.distance}};
+  if (r.volume > 0.0) {
+    j["surface_volume"] = r.volume;
+    j["volume_error"] = volume_error;
+  }
+  if (sampled) j["sample_spacing"] = r.options.tolerance;
+  return j;
 }
 
 int run_check(const CheckOptions& opt) {
@@ -103,7 +148,8 @@ Command add_check_command(CLI::App& root) {
   CLI::App* app = root.add_subcommand("check", "Validity and quality report of a volume mesh");
   app->add_option("mesh", opt->mesh, "mesh (.vtu .msh)")->required();
   app->add_option("--surface", opt->surface,
-                  "reference surface: report the volume error and the two-sided Hausdorff "
+                  "reference surface (.stl .off .obj .ply) or analytic domain (builtin:ball, "
+                  "a .json of solids): report the volume error and the two-sided Hausdorff "
                   "distance of the mesh boundary, relative to the bounding-box diagonal");
   app->add_option("-o,--quality-vtu", opt->quality_output,
                   "write the mesh with one cell array per quality metric (.vtu)");

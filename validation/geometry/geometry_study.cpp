@@ -1,4 +1,4 @@
-// Geometric convergence of one mesher on one domain (issue 4, DESIGN.md §5): per level, the
+// Geometric convergence of one mesher on one domain (DESIGN.md §5): per level, the
 // mesh's region volumes against the exact ones and, for analytic domains, the two-sided
 // Hausdorff distance between its boundaries/interfaces and the true surfaces, overall and
 // within a band around the sharp edges. One JSON object per level on stdout.
@@ -9,8 +9,9 @@
 // feature band is K h (default 2); M is the octree's margin around the bounding box (default:
 // OctreeOptions'; 0 puts a box-shaped domain's faces on the octree grid); C is
 // CutcellOptions::vertex_clearance (0 moves no grid vertex off the interfaces); G is
-// CutcellOptions::split_gap. Exact volumes: builtin_region_volumes for built-in domains, the
-// solid's own volume for a file holding one analytic primitive.
+// CutcellOptions::split_gap. Exact volumes: exact_region_volumes (built-in domains' closed
+// forms, the solid's own volume for a file holding one analytic primitive). The distances are
+// surface_distance's against AnalyticSurfaces, the volumes check_validity's.
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -21,11 +22,12 @@
 #include <optional>
 #include <string>
 
-#include "geometric_error.hpp"
+#include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/domain_file.hpp"
 #include "volmesh/octree/staircase.hpp"
+#include "volmesh/quality/analytic_surfaces.hpp"
 
 namespace {
 
@@ -80,27 +82,19 @@ std::unique_ptr<Domain> load(const std::string& name) {
   return read_domain_file(name);
 }
 
-std::map<Index, double> exact_volumes(const std::string& name, const Domain& domain) {
-  const std::string prefix = "builtin:";
-  if (name.starts_with(prefix)) return builtin_region_volumes(name.substr(prefix.size()));
-  const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain);
-  if (analytic && analytic->primitives().size() == 1 && domain.regions().size() == 1)
-    return {{domain.regions()[0], geometry::solid_volume(analytic->primitives()[0])}};
-  return {};
-}
-
 double cell_size(const Domain& domain, const OctreeOptions& octree, int level) {
   return std::ldexp(octree_root(domain, octree).side, -level);
 }
 
-nlohmann::json one_sided(const geometry::OneSided& s) {
-  return {{"mesh_to_surface", s.mesh_to_surface},
-          {"surface_to_mesh", s.surface_to_mesh},
-          {"hausdorff", s.hausdorff()},
-          {"mesh_samples", s.mesh_samples},
-          {"surface_samples", s.surface_samples},
-          {"mesh_worst", {s.mesh_worst.x(), s.mesh_worst.y(), s.mesh_worst.z()}},
-          {"surface_worst", {s.surface_worst.x(), s.surface_worst.y(), s.surface_worst.z()}}};
+nlohmann::json two_sided(const TwoSidedDistance& d) {
+  const auto at = [](const Vec3& p) { return nlohmann::json{p.x(), p.y(), p.z()}; };
+  return {{"mesh_to_surface", d.mesh_to_surface.distance},
+          {"surface_to_mesh", d.surface_to_mesh.distance},
+          {"hausdorff", d.hausdorff()},
+          {"mesh_samples", d.mesh_to_surface.points},
+          {"surface_samples", d.surface_to_mesh.points},
+          {"mesh_worst", at(d.mesh_to_surface.at)},
+          {"surface_worst", at(d.surface_to_mesh.at)}};
 }
 
 nlohmann::json run_level(const Arguments& a, const Domain& domain,
@@ -132,7 +126,7 @@ nlohmann::json run_level(const Arguments& a, const Domain& domain,
                         {"h", h},             {"cells", mesh.num_cells()},
                         {"cut_cells", cut_cells}, {"bad_faces", bad_faces},
                         {"mesh_seconds", mesh_seconds}};
-  const std::map<Index, double> volumes = geometry::region_volumes(mesh);
+  const std::map<Index, double> volumes = check_validity(mesh).region_volume;
   double total = 0.0, exact_total = 0.0, max_region_error = 0.0;
   nlohmann::json regions = nlohmann::json::object();
   for (const auto& [label, volume] : volumes) total += volume;
@@ -153,13 +147,14 @@ nlohmann::json run_level(const Arguments& a, const Domain& domain,
 
   if (const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain)) {
     const auto measured = Clock::now();
-    const geometry::HausdorffReport report =
-        geometry::hausdorff(mesh, *analytic, {h / a.spacing, a.band * h});
-    row["hausdorff"] = one_sided(report.all);
+    const AnalyticSurfaces surfaces(*analytic);
+    const SurfaceDistance d =
+        surface_distance(mesh, surfaces, {.tolerance = h / a.spacing, .feature_band = a.band * h});
+    row["hausdorff"] = two_sided(d.all);
     nlohmann::json features = nlohmann::json::object();
-    for (std::size_t i = 0; i < report.features.size(); ++i)
-      if (report.features[i].surface_samples > 0)
-        features[analytic->primitives()[i].name] = one_sided(report.features[i]);
+    const std::vector<std::string> groups = surfaces.feature_groups();
+    for (std::size_t g = 0; g < d.features.size(); ++g)
+      if (d.features[g].surface_to_mesh.points > 0) features[groups[g]] = two_sided(d.features[g]);
     row["features"] = features;
     row["measure_seconds"] = std::chrono::duration<double>(Clock::now() - measured).count();
   }
@@ -181,7 +176,7 @@ int main(int argc, char** argv) {
   }
   try {
     const std::unique_ptr<Domain> domain = load(a.domain);
-    const std::map<Index, double> exact = exact_volumes(a.domain, *domain);
+    const std::map<Index, double> exact = exact_region_volumes(a.domain, *domain);
     for (int level = a.first; level <= a.last; ++level)
       std::cout << run_level(a, *domain, exact, level).dump() << std::endl;
   } catch (const std::exception& e) {

@@ -11,4 +11,8 @@ namespace volmesh {
 // with the mesh (the same indices), extra centre points are appended.
 TriSurface boundary_surface(const PolyMesh& mesh);
 
+// The same with the faces between two regions added (oriented from owner to neighbour):
+// every region's boundary, each interface once. Faces keep the mesh's order.
+TriSurface region_boundary_surface(const PolyMesh& mesh);
+
 }  // namespace volmesh

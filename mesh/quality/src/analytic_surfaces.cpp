@@ -1,13 +1,15 @@
-// Exact distances to, sharp edges of and samples on the analytic primitives (analytic.hpp),
-// for measuring how far a mesh is from the TRUE surface.
+// Exact distances to, sharp edges of, samples on and volumes of the analytic primitives:
+// the TRUE surfaces a mesh of an analytic domain is measured against.
+#include "volmesh/quality/analytic_surfaces.hpp"
+
 #include <cmath>
+#include <limits>
 #include <numbers>
 
-#include "geometric_error.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/domain/analytic_closest.hpp"
+#include "volmesh/domain/builtin.hpp"
 
-namespace volmesh::geometry {
+namespace volmesh {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -124,13 +126,14 @@ std::vector<SurfacePoint> ellipsoid_samples(const Ellipsoid& e, double spacing) 
   return out;
 }
 
-}  // namespace
-
-double surface_distance(const Primitive& primitive, const Vec3& p) {
-  return (closest_surface_point(primitive, p).point - p).norm();
+bool has_sharp_edges(const Primitive& primitive) {
+  return std::holds_alternative<Box>(primitive.shape) ||
+         std::holds_alternative<Cylinder>(primitive.shape);
 }
 
-double feature_distance(const Primitive& primitive, const Vec3& p) {
+}  // namespace
+
+double sharp_edge_distance(const Primitive& primitive, const Vec3& p) {
   const Vec3 q = to_local(primitive, p);
   return std::visit(Overloaded{
                         [&](const Box& b) { return box_edges_distance(b, q); },
@@ -181,4 +184,40 @@ double solid_volume(const Primitive& primitive) {
       primitive.shape);
 }
 
-}  // namespace volmesh::geometry
+AnalyticSurfaces::AnalyticSurfaces(const AnalyticDomain& domain)
+    : primitives_(domain.primitives().begin(), domain.primitives().end()) {
+  for (std::size_t i = 0; i < primitives_.size(); ++i)
+    if (has_sharp_edges(primitives_[i])) sharp_.push_back(i);
+}
+
+double AnalyticSurfaces::distance(const Vec3& p) const {
+  double d = kInfinity;
+  for (const Primitive& primitive : primitives_)
+    d = std::min(d, (closest_surface_point(primitive, p).point - p).norm());
+  return d;
+}
+
+void AnalyticSurfaces::sample(std::size_t part, double spacing, std::vector<Vec3>& out) const {
+  for (const SurfacePoint& s : sample_surface(primitives_[part], spacing)) out.push_back(s.point);
+}
+
+std::vector<std::string> AnalyticSurfaces::feature_groups() const {
+  std::vector<std::string> names;
+  for (const std::size_t i : sharp_) names.push_back(primitives_[i].name);
+  return names;
+}
+
+double AnalyticSurfaces::feature_distance(std::size_t group, const Vec3& p) const {
+  return sharp_edge_distance(primitives_[sharp_[group]], p);
+}
+
+std::map<Index, double> exact_region_volumes(const std::string& spec, const Domain& domain) {
+  const std::string prefix = "builtin:";
+  if (spec.starts_with(prefix)) return builtin_region_volumes(spec.substr(prefix.size()));
+  const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain);
+  if (analytic && analytic->primitives().size() == 1 && domain.regions().size() == 1)
+    return {{domain.regions()[0], solid_volume(analytic->primitives()[0])}};
+  return {};
+}
+
+}  // namespace volmesh
