@@ -11,7 +11,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/cutcell/cell_split.hpp"
+#include "cell_split.hpp"
 #include "volmesh/io/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 

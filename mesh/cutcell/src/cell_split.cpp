@@ -1,4 +1,4 @@
-#include "volmesh/cutcell/cell_split.hpp"
+#include "cell_split.hpp"
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/io/polygon_split.hpp"

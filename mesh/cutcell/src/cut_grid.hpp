@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "volmesh/cutcell/cell_split.hpp"
+#include "cell_split.hpp"
+#include "face_contour.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
-#include "volmesh/cutcell/face_contour.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh::cutcell {

@@ -2,7 +2,7 @@
 // four-point ambiguity resolved by the normals), the diagonal rule for three regions with
 // equal opposite corners, otherwise a face interface point at the least-squares intersection
 // of the tangent lines (centroid of the interface points when it leaves the face).
-#include "volmesh/cutcell/face_contour.hpp"
+#include "face_contour.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,9 +11,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "curve_crossing.hpp"
+#include "tangent_point.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/cutcell/curve_crossing.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "cut_grid.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {

@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "volmesh/cutcell/loop_triangulation.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "loop_triangulation.hpp"
+#include "tangent_point.hpp"
 
 namespace volmesh::cutcell {
 
