@@ -33,7 +33,7 @@ class Agglomerator {
     face_alive_.assign(mesh.num_faces(), 1);
     joined_loop_.assign(mesh.num_faces(), kNoIndex);
     cell_alive_.assign(mesh.num_cells(), 1);
-    limits_ = {options.skewness_limit, options.max_non_orthogonality};
+    limits_ = options.limits;
   }
   AgglomerationStats run();
   // The faces' geometry, of the rebuilt mesh once run() has rebuilt it.

@@ -15,13 +15,13 @@
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {
 
 struct AgglomerationOptions {
-  double skewness_limit = 4.0;         // checkMesh flags faces above 4
-  double max_non_orthogonality = 88.0; // degrees; checkMesh fails at 90
-  double min_volume_ratio = 0.0;       // cells below this * size^3 are merged too
+  CheckMeshLimits limits;          // a cell with a face beyond them is merged
+  double min_volume_ratio = 0.0;   // cells below this * size^3 are merged too
   int rounds = 16;
 };
 

@@ -651,7 +651,7 @@ double Splitter::badness(std::span<const int> face, const Vec3& owner, const Vec
   // triangulations stays as it was tuned.
   return std::min(kInvertedFace,
                   checkmesh_badness(g, position_, face, owner, outside ? nullptr : &neighbour,
-                                    {options_.skewness_limit, options_.max_non_orthogonality}));
+                                    options_.limits));
 }
 
 // The last resort for a face still rejected: merged with a neighbouring face of its

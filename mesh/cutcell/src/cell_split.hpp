@@ -10,6 +10,7 @@
 
 #include "loop_triangulation.hpp"
 #include "tangent_point.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {
 
@@ -74,11 +75,9 @@ struct CellOptions {
   // Two triangles of a component whose points lie within flat * size of each other's plane
   // may swap their diagonal (the surface stays put) when that lowers their skewness.
   double flat = 1e-6;
-  // When a triangle is more skewed than this (OpenFOAM's measure; checkMesh flags faces
-  // above 4), more non-orthogonal (degrees; checkMesh fails at 90) or behind a piece's
-  // centre, the other triangulations of each component are tried.
-  double skewness_limit = 4.0;
-  double max_non_orthogonality = 88.0;
+  // When a triangle lies beyond these limits (checkmesh_badness above 1) or behind a
+  // piece's centre, the other triangulations of each component are tried.
+  CheckMeshLimits limits;
   // The last resort for a triangle still more skewed: merged with neighbouring triangles of
   // its interface whose normals differ by less than this angle (degrees) into one polygon
   // face (a sliver at any angle, except across a sharp edge its component keeps). 0 keeps
@@ -128,9 +127,8 @@ struct CellSplit {
   std::vector<int> polygon_piece;  // the piece of each input polygon
   std::vector<LoopMethod> loops;   // how each component was triangulated
   bool cell_point_left_cell = false;  // the least-squares cell point fell outside; centroid used
-  // How far the worst interface face is from checkMesh's limits, from the pieces' centres:
-  // max(skewness / skewness_limit, non-orthogonality / max_non_orthogonality), 1e3 for a
-  // face behind a centre; above 1: rejected. Boundary faces (region 0 below) as checkMesh
+  // How far the worst interface face is from CellOptions::limits, from the pieces' centres
+  // (checkmesh_badness, kInvertedFace for a face behind a centre); above 1: rejected. Boundary faces (region 0 below) as checkMesh
   // measures those.
   double max_badness = 0.0;
 };
