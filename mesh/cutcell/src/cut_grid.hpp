@@ -130,16 +130,11 @@ void find_edge_points(Grid& grid, EdgeMemo& memo);
 using LeafMask = std::vector<std::uint8_t>;
 inline bool marked(const LeafMask& among, Index leaf) { return among.empty() || among[leaf]; }
 
-// Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
-// also covers an edge of a larger leaf whose midpoint lies in another region).
-std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level, const LeafMask& among = {});
-
-// Cut leaves below max_level with a transition face whose centre vertex an interface passes
-// within clearance * size of, along the leaf's edge direction into the leaf: no edge of the
-// leaf runs there, so the vertex moves do not see it and the piece between would be a
-// sliver. Split, the vertex becomes a corner of edges that the moves clear.
-std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance,
-                                               const LeafMask& among = {});
+// The leaves below max_level that the first two extra rules select (extra_rules.hpp: an
+// edge crossed more than once; with clearance > 0, an interface within clearance * size of
+// a transition face's centre), sorted.
+std::vector<Index> leaves_by_extra_rules(const Grid& grid, int max_level, double clearance,
+                                         const LeafMask& among = {});
 
 // Cut leaves below max_level whose edge points see one smooth sheet (their normals pairwise
 // within cosine theta, the feature threshold) while a crossing of the two axis segments
@@ -150,11 +145,11 @@ std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, 
 std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta,
                                           const LeafMask& among = {});
 
-// Splits these leaves (selected by the two rules above on a grid of the tree, each below
-// max_level) and then, round by round, the leaves the rules select among those the splits
-// created or touched, evaluated from the tree and the domain (and that grid's vertices and
-// edge memo, for what they know) alone, until none is selected: the grid of the result has
-// none to select. clearance as for leaves_thin_at_face_centres (0: the first rule alone).
+// Splits these leaves (selected by leaves_by_extra_rules on a grid of the tree, each below
+// max_level) and then, round by round, the leaves the same rules select among those the
+// splits created or touched, evaluated from the tree and the domain (and that grid's
+// vertices and edge memo, for what they know) alone, until none is selected: the grid of
+// the result has none to select. clearance as for leaves_by_extra_rules.
 struct ExtraRuleSplits {
   int rounds = 0;
   // The leaves the splits made and those across their faces and edges, as nodes (later

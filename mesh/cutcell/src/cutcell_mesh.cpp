@@ -86,11 +86,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     // points of a grid).
     const LeafMask among = touched ? leaves_among(tree, *touched) : LeafMask{};
     const double clearance = settings.exact ? options.vertex_clearance : 0.0;
-    std::vector<Index> split = leaves_crossed_twice(grid, crossing_level, among);
-    if (clearance > 0.0) {
-      const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance, among);
-      split.insert(split.end(), thin.begin(), thin.end());
-    }
+    std::vector<Index> split = leaves_by_extra_rules(grid, crossing_level, clearance, among);
     if (settings.exact) {
       const std::vector<Index> hiding = leaves_hiding_features(grid, crossing_level, options.feature_theta, among);
       split.insert(split.end(), hiding.begin(), hiding.end());
