@@ -5,7 +5,6 @@
 // polyhedral piece per connected part of each region.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "loop_triangulation.hpp"
@@ -139,17 +138,5 @@ CellSplit split_cell(const CellInput& cell, const CellOptions& options = {});
 // The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
 // they share none or more, or the union would touch itself.
 std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b);
-
-// Distance of p inside the hexahedron with these corners (negative outside), measured from
-// the planes of its faces (through their centres, along their mean normals).
-double depth_inside_cell(const std::array<Vec3, 8>& corners, const Vec3& p);
-// p pushed inside until it lies `margin` from every face plane; nullopt when it lies farther
-// than `reach` outside.
-std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, double margin,
-                                    double reach);
-// p moved along `direction` (either way, the least distance) until it lies `margin` from
-// every face plane; nullopt when no such move reaches it within `reach`.
-std::optional<Vec3> slide_into_cell(const std::array<Vec3, 8>& corners, const Vec3& p, const Vec3& direction,
-                                    double margin, double reach);
 
 }  // namespace volmesh::cutcell
