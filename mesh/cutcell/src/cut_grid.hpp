@@ -91,8 +91,7 @@ struct Grid {
   double leaf_size(Index leaf) const { return tree->cell_size(tree->leaf(leaf).level); }
   Index find_edge(Index a, Index b) const { return edge_index.find(edge_key(a, b)); }
   // The fine face (leaf, face), kNoIndex if there is none. An offset table, not a hash: the
-  // assembly looks up every face of every leaf, and a hash lookup's cache miss was 8% of a
-  // builtin:primitives 7/7 run.
+  // assembly looks up every face of every leaf, and a hash lookup is a cache miss each.
   Index find_face(Index leaf, int face) const {
     for (Index k = first_face[leaf]; k < first_face[leaf + 1]; ++k)
       if (faces[k].face == face) return k;
@@ -140,8 +139,9 @@ std::vector<Index> leaves_by_extra_rules(const Grid& grid, int max_level, double
 // within cosine theta, the feature threshold) while a crossing of the two axis segments
 // through the leaf's centre that run most nearly along the sheet faces elsewhere (its
 // normal's cosine below theta with every edge point's): a sharp edge passing through the
-// leaf without crossing its edges, which the leaf's fan would cut off (fandisk's ridge at
-// level 7). Normals oriented from the lower region into the higher.
+// leaf without crossing its edges, which the leaf's fan would cut off (a CAD part's ridge
+// between two of its leaf's grid planes). Normals oriented from the lower region into the
+// higher.
 std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta,
                                           const LeafMask& among = {});
 

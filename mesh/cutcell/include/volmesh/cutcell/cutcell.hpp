@@ -37,9 +37,10 @@ struct CutcellOptions {
   double vertex_clearance = 0.1;
   // An edge still crossed twice at the deepest level, from its ends' regions into a third
   // between, keeps both crossings (a vertex of the third region splits it) when they lie at
-  // least this fraction of the edge apart (exact mode only); nearer, the one crossing kept
-  // is off by less. At 0.2, builtin:primitives' junction lines were 0.037 h off at level 7;
-  // smaller gaps leave smaller wedge tips that no merge can take (5e-5 h^3 at 0.05).
+  // least this fraction of the edge apart (exact mode only); nearer, one crossing stands for
+  // both, off by less than the gap. Where a thin wedge of the third region pinches out, a
+  // larger gap moves the junction lines farther off, a smaller one keeps thinner wedge tips:
+  // tiny cells that no merge can take.
   double split_gap = 0.05;
   // Cells that checkMesh would reject (a face beyond `limits`, an inverted face pyramid) or
   // smaller than merge_volume_ratio * h^3 are merged with one or two neighbours of their
