@@ -2,7 +2,7 @@
 // interfaces and summing to the cube, face and cell interface points at the junctions.
 #include <gtest/gtest.h>
 
-
+#include "cell_planes.hpp"
 #include "unit_cube.hpp"
 #include "volmesh/domain/csg.hpp"
 

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "volmesh/cutcell/curve_crossing.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "curve_crossing.hpp"
+#include "tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {

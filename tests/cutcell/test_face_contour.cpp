@@ -6,8 +6,8 @@
 #include <optional>
 #include <cmath>
 
+#include "face_contour.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/cutcell/face_contour.hpp"
 
 namespace volmesh::cutcell {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "volmesh/cutcell/loop_triangulation.hpp"
+#include "loop_triangulation.hpp"
 
 namespace volmesh::cutcell {
 namespace {

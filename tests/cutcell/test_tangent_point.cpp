@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "cell_split.hpp"
+#include "face_contour.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/cutcell/cell_split.hpp"
-#include "volmesh/cutcell/face_contour.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/octree/octree.hpp"
 

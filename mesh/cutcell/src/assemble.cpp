@@ -19,8 +19,8 @@ struct FaceOut {
   Vec3 centre = Vec3::Zero();
 };
 
-// The faces a block of leaves emits, their loops in one array: a vector per face cost a
-// million small allocations (and their frees, on one core) on builtin:primitives 7/7.
+// The faces a block of leaves emits, their loops in one array: a vector per face would be a
+// small allocation per face, and their frees run on one core.
 struct FaceBlock {
   std::vector<PointKey> keys;
   std::vector<FaceOut> faces;

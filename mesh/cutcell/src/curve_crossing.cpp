@@ -1,4 +1,4 @@
-#include "volmesh/cutcell/curve_crossing.hpp"
+#include "curve_crossing.hpp"
 
 #include <cmath>
 

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "volmesh/cutcell/cell_split.hpp"
+#include "cell_split.hpp"
+#include "face_contour.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
-#include "volmesh/cutcell/face_contour.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh::cutcell {
@@ -91,8 +91,7 @@ struct Grid {
   double leaf_size(Index leaf) const { return tree->cell_size(tree->leaf(leaf).level); }
   Index find_edge(Index a, Index b) const { return edge_index.find(edge_key(a, b)); }
   // The fine face (leaf, face), kNoIndex if there is none. An offset table, not a hash: the
-  // assembly looks up every face of every leaf, and a hash lookup's cache miss was 8% of a
-  // builtin:primitives 7/7 run.
+  // assembly looks up every face of every leaf, and a hash lookup is a cache miss each.
   Index find_face(Index leaf, int face) const {
     for (Index k = first_face[leaf]; k < first_face[leaf + 1]; ++k)
       if (faces[k].face == face) return k;
@@ -130,31 +129,27 @@ void find_edge_points(Grid& grid, EdgeMemo& memo);
 using LeafMask = std::vector<std::uint8_t>;
 inline bool marked(const LeafMask& among, Index leaf) { return among.empty() || among[leaf]; }
 
-// Cut leaves below max_level with an edge crossed more than once (the paper's rule, which
-// also covers an edge of a larger leaf whose midpoint lies in another region).
-std::vector<Index> leaves_crossed_twice(const Grid& grid, int max_level, const LeafMask& among = {});
-
-// Cut leaves below max_level with a transition face whose centre vertex an interface passes
-// within clearance * size of, along the leaf's edge direction into the leaf: no edge of the
-// leaf runs there, so the vertex moves do not see it and the piece between would be a
-// sliver. Split, the vertex becomes a corner of edges that the moves clear.
-std::vector<Index> leaves_thin_at_face_centres(const Grid& grid, int max_level, double clearance,
-                                               const LeafMask& among = {});
+// The leaves below max_level that the first two extra rules select (extra_rules.hpp: an
+// edge crossed more than once; with clearance > 0, an interface within clearance * size of
+// a transition face's centre), sorted.
+std::vector<Index> leaves_by_extra_rules(const Grid& grid, int max_level, double clearance,
+                                         const LeafMask& among = {});
 
 // Cut leaves below max_level whose edge points see one smooth sheet (their normals pairwise
 // within cosine theta, the feature threshold) while a crossing of the two axis segments
 // through the leaf's centre that run most nearly along the sheet faces elsewhere (its
 // normal's cosine below theta with every edge point's): a sharp edge passing through the
-// leaf without crossing its edges, which the leaf's fan would cut off (fandisk's ridge at
-// level 7). Normals oriented from the lower region into the higher.
+// leaf without crossing its edges, which the leaf's fan would cut off (a CAD part's ridge
+// between two of its leaf's grid planes). Normals oriented from the lower region into the
+// higher.
 std::vector<Index> leaves_hiding_features(const Grid& grid, int max_level, double theta,
                                           const LeafMask& among = {});
 
-// Splits these leaves (selected by the two rules above on a grid of the tree, each below
-// max_level) and then, round by round, the leaves the rules select among those the splits
-// created or touched, evaluated from the tree and the domain (and that grid's vertices and
-// edge memo, for what they know) alone, until none is selected: the grid of the result has
-// none to select. clearance as for leaves_thin_at_face_centres (0: the first rule alone).
+// Splits these leaves (selected by leaves_by_extra_rules on a grid of the tree, each below
+// max_level) and then, round by round, the leaves the same rules select among those the
+// splits created or touched, evaluated from the tree and the domain (and that grid's
+// vertices and edge memo, for what they know) alone, until none is selected: the grid of
+// the result has none to select. clearance as for leaves_by_extra_rules.
 struct ExtraRuleSplits {
   int rounds = 0;
   // The leaves the splits made and those across their faces and edges, as nodes (later

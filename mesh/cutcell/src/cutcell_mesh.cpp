@@ -57,7 +57,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
   settings.face.exact_points = settings.cell.exact_points = settings.exact;
   settings.face.feature_theta = settings.cell.feature.theta = options.feature_theta;
   settings.cell.feature.phi = options.feature_phi;
-  settings.cell.skewness_limit = options.skewness_limit;
+  settings.cell.limits = options.limits;
   if (settings.exact)
     settings.face.surface_near = settings.cell.surface_near = [&domain](const Vec3& x, const Vec3& d) {
       std::optional<std::pair<Vec3, Vec3>> best;
@@ -86,11 +86,7 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
     // points of a grid).
     const LeafMask among = touched ? leaves_among(tree, *touched) : LeafMask{};
     const double clearance = settings.exact ? options.vertex_clearance : 0.0;
-    std::vector<Index> split = leaves_crossed_twice(grid, crossing_level, among);
-    if (clearance > 0.0) {
-      const std::vector<Index> thin = leaves_thin_at_face_centres(grid, crossing_level, clearance, among);
-      split.insert(split.end(), thin.begin(), thin.end());
-    }
+    std::vector<Index> split = leaves_by_extra_rules(grid, crossing_level, clearance, among);
     if (settings.exact) {
       const std::vector<Index> hiding = leaves_hiding_features(grid, crossing_level, options.feature_theta, among);
       split.insert(split.end(), hiding.begin(), hiding.end());
@@ -181,10 +177,10 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   if (options.merge_rounds > 0) {
     progress("merging", 0.9);
     AgglomerationOptions merging;
-    merging.skewness_limit = options.skewness_limit;
+    merging.limits = options.limits;
     merging.min_volume_ratio = options.merge_volume_ratio;
     merging.rounds = options.merge_rounds;
-    st.split_cells = split_reflex_cells(mesh, cell_size, {merging.skewness_limit, merging.max_non_orthogonality});
+    st.split_cells = split_reflex_cells(mesh, cell_size, options.limits);
     const AgglomerationStats merged = agglomerate(mesh, cell_size, merging, face_geometry);
     st.merged_cells = merged.merged;
     st.joined_faces = merged.joined;

@@ -2,7 +2,7 @@
 // four-point ambiguity resolved by the normals), the diagonal rule for three regions with
 // equal opposite corners, otherwise a face interface point at the least-squares intersection
 // of the tangent lines (centroid of the interface points when it leaves the face).
-#include "volmesh/cutcell/face_contour.hpp"
+#include "face_contour.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,9 +11,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "curve_crossing.hpp"
+#include "tangent_point.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/cutcell/curve_crossing.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
 namespace {
@@ -23,10 +23,11 @@ constexpr double kRightAngle = 0.5;
 // A feature point within 10 times this fraction of the side outside its face, or less than
 // it inside, is moved to this depth.
 constexpr double kSideSlack = 1e-3;
-// A sharp edge's feature point keeps this fraction of the side from the kept polygon's sides
-// (the margin is for the points of curved surfaces): an edge crossing the face just beside a
-// side whose end is kept (fandisk's, 0.014 of the side from it) keeps its point, which the
-// cell's feature fan needs, and leaves a thin but proper spike of the kept polygon.
+// A sharp edge's feature point keeps this fraction of the side from the kept polygon's sides,
+// less than the margin (which is for the points of curved surfaces): an edge crossing the
+// face just beside a side whose end is kept (a CAD part's edge along a grid plane) keeps
+// its point, which the cell's feature fan needs, and leaves a thin but proper spike of the
+// kept polygon.
 constexpr double kSideClearance = 1e-2;
 
 struct Frame {

@@ -1,10 +1,11 @@
-// The extra refinement rules between grid passes. A split changes the rules' verdict only on
-// the new leaves and on the leaves across their faces and edges (whose edges and faces gain
-// midpoint and centre vertices); everywhere else the last grid's verdict stands. So after a
-// grid pass has split its leaves, the rules run on those leaves alone, straight from the tree
-// and the domain, and their leaves are split, until none applies; the next grid pass then
-// finds nothing more. Each grid pass rebuilt the whole vertex table and edge list for a
-// handful of splits (seven passes on builtin:primitives at level 7, 0.6 s each).
+// The first two extra refinement rules (extra_rules.hpp) between grid passes. A split
+// changes the rules' verdict only on the new leaves and on the leaves across their faces and
+// edges (whose edges and faces gain midpoint and centre vertices); everywhere else the last
+// grid's verdict stands. So after a grid pass has split its leaves, the rules run on those
+// leaves alone, their inputs gathered straight from the tree and the domain, and their
+// leaves are split, until none applies; the next grid pass then finds nothing more. A grid
+// pass rebuilds the whole vertex table and edge list, which a handful of splits does not
+// need.
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_sort.h>
 
@@ -13,6 +14,7 @@
 #include <optional>
 
 #include "cut_grid.hpp"
+#include "extra_rules.hpp"
 
 namespace volmesh::cutcell {
 namespace {
@@ -71,10 +73,6 @@ LeafVertices leaf_vertices(const Octree& tree, Index i) {
   return v;
 }
 
-int transversal(const std::vector<Crossing>& hits) {
-  return static_cast<int>(std::count_if(hits.begin(), hits.end(), [](const Crossing& c) { return c.before != c.after; }));
-}
-
 // Regions and crossing counts known from the last grid (its vertex table and edge memo) and
 // from the rounds since: a round queries the domain only for what is new. On a surface the
 // queries are most of a round's time.
@@ -110,8 +108,8 @@ class Known {
   std::map<EdgeMemo::Key, int> crossings_;
 };
 
-// What leaves_crossed_twice and leaves_thin_at_face_centres select among `leaves` on a grid
-// of this tree (clearance 0: the first rule alone).
+// What leaves_by_extra_rules selects among `leaves` on a grid of this tree, the rules'
+// inputs gathered from the tree and the domain.
 std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Known& known,
                                    const std::vector<Index>& leaves, int max_level, double clearance) {
   std::vector<Index> below;
@@ -161,23 +159,22 @@ std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Kno
                     [&](Index r) { return r != region[first[k]]; }))
       cut.push_back(k);
 
-  // Per cut leaf: its fine edges (two where the leaf edge has a midpoint; each one not
-  // known yet queried once, as the grid would, from its lower end), then one segment per
-  // transition face from its centre one edge into the leaf (edge -1).
-  struct Segment {
+  // Per cut leaf: its fine edges (two where the leaf edge has a midpoint), each one not
+  // known yet queried once, as the grid would, from its lower end.
+  struct FineEdge {
     std::size_t leaf;  // in cut
     int edge;
     int crossings = 0;
     std::size_t query = kKnown;
   };
-  std::vector<Segment> segments;
+  std::vector<FineEdge> fine;
   std::vector<Vec3> a, b;
-  std::vector<std::optional<EdgeMemo::Key>> query_edge;  // per query: the fine edge, if one
+  std::vector<EdgeMemo::Key> query_edge;
   std::map<EdgeMemo::Key, std::size_t> edge_query;
   for (std::size_t j = 0; j < cut.size(); ++j) {
     const LeafVertices& v = verts[cut[j]];
     const auto add_edge = [&](const GridPoint& p, const GridPoint& q, int e) {
-      Segment s{j, e};
+      FineEdge s{j, e};
       const EdgeMemo::Key key = Known::key(p, q);
       if (const std::optional<int> c = known.crossings(key)) {
         s.crossings = *c;
@@ -190,7 +187,7 @@ std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Kno
         }
         s.query = it->second;
       }
-      segments.push_back(s);
+      fine.push_back(s);
     };
     for (int e = 0; e < 12; ++e) {
       const GridPoint &p = v.corner[kEdgeCorners[e][0]], &q = v.corner[kEdgeCorners[e][1]];
@@ -201,44 +198,27 @@ std::vector<Index> selected_leaves(const Octree& tree, const Domain& domain, Kno
         add_edge(p, q, e);
       }
     }
-    if (clearance > 0.0)
-      for (int f = 0; f < 6; ++f)
-        if (v.has_centre[f]) {
-          const Vec3 from = tree.world(v.centre[f]);
-          const double size = tree.cell_size(tree.leaf(below[cut[j]]).level);
-          segments.push_back({j, -1, 0, a.size()});
-          a.push_back(from);
-          b.push_back(from + (f & 1 ? -1.0 : 1.0) * size * Vec3::Unit(f / 2));
-          query_edge.push_back(std::nullopt);
-        }
   }
   std::vector<std::vector<Crossing>> hits;
   domain.crossings(a, b, hits);
   std::vector<int> query_crossings(a.size(), 0);
-  for (std::size_t q = 0; q < a.size(); ++q)
-    if (query_edge[q]) {
-      query_crossings[q] = std::min(transversal(hits[q]), 255);
-      known.add_crossings(*query_edge[q], query_crossings[q]);
-    }
-
-  std::vector<std::uint8_t> flag(cut.size(), 0);
-  std::vector<std::array<int, 12>> crossings(cut.size(), std::array<int, 12>{});
-  for (const Segment& s : segments) {
-    if (s.edge >= 0) {
-      const int c = s.query == kKnown ? s.crossings : query_crossings[s.query];
-      if ((crossings[s.leaf][s.edge] += c) > 1) flag[s.leaf] = 1;
-      continue;
-    }
-    for (const Crossing& c : hits[s.query])
-      if (c.before != c.after) {
-        if (c.t < clearance) flag[s.leaf] = 1;
-        break;
-      }
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    query_crossings[q] = transversal_crossings(hits[q]);
+    known.add_crossings(query_edge[q], query_crossings[q]);
   }
-  std::vector<Index> out;
-  for (std::size_t j = 0; j < cut.size(); ++j)
-    if (flag[j]) out.push_back(below[cut[j]]);
-  return out;
+  std::vector<std::array<int, 12>> crossings(cut.size(), std::array<int, 12>{});
+  for (const FineEdge& s : fine) crossings[s.leaf][s.edge] += s.query == kKnown ? s.crossings : query_crossings[s.query];
+
+  RuleCandidates candidates;
+  for (std::size_t j = 0; j < cut.size(); ++j) {
+    const Index leaf = below[cut[j]];
+    candidates.add_leaf(leaf, *std::max_element(crossings[j].begin(), crossings[j].end()));
+    const LeafVertices& v = verts[cut[j]];
+    for (int f = 0; f < 6; ++f)
+      if (v.has_centre[f])
+        candidates.add_transition_face(f, tree.world(v.centre[f]), tree.cell_size(tree.leaf(leaf).level));
+  }
+  return leaves_selected(candidates, domain, clearance);
 }
 
 // The leaves that splitting these nodes made: their children still leaves (a child split in

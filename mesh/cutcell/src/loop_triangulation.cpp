@@ -1,4 +1,4 @@
-#include "volmesh/cutcell/loop_triangulation.hpp"
+#include "loop_triangulation.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -487,7 +487,7 @@ Index ReflexSplitter::run() {
 }
 
 // Two cells of different regions bent into each other: each one's centre lies behind a
-// face they share (layers6, where a pinched-out layer meets the fault), so a split of either
+// face they share (where a pinched-out layer meets a fault), so a split of either
 // alone still leaves the face rejected, by the other side. c is split where that lowers its
 // worst face, then in turn each cell across a face the split leaves rejected, and the
 // splits are kept only when none of their parts' faces is rejected. Where c is rejected only

@@ -1,4 +1,4 @@
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "tangent_point.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

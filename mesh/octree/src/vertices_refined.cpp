@@ -1,8 +1,8 @@
 // The vertex table of a tree updated from the table it had before some leaves were split:
 // a split removes no vertex, so the known codes are merged with the corners of the new
 // leaves, and only vertices around the new leaves are classified again. The refinement
-// passes of the cut cells rebuild the table after each split; sorting every leaf's corners
-// each time was half of a primitives 7/7 run.
+// passes of the cut cells rebuild the table after each split, a few leaves at a time:
+// sorting every leaf's corners each time would cost more than the splits.
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_sort.h>
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "volmesh/quality/face_metrics.hpp"
+
 namespace volmesh {
 
 namespace {
@@ -52,11 +54,11 @@ QualityReport quality_report(const PolyMesh& mesh, const QualityMeasurements& m)
                                        [](double a) { return a > kSevereNonOrthogonalityDeg; }));
   r.highly_skewed_faces =
       static_cast<Index>(std::count_if(m.faces.skewness.begin(), m.faces.skewness.end(),
-                                       [](double s) { return s > kHighSkewness; }));
+                                       [](double s) { return s > kCheckMeshSkewness; }));
   // checkMesh counts an error where the cosine is at most SMALL: 90° to rounding.
   r.non_orthogonality_errors =
       static_cast<Index>(std::count_if(internal_ortho.begin(), internal_ortho.end(),
-                                       [](double a) { return a >= 90.0 - 1e-12; }));
+                                       [](double a) { return a >= kCheckMeshNonOrthogonality - 1e-12; }));
   r.inverted_face_pyramids = std::accumulate(m.faces.inverted_pyramids.begin(), m.faces.inverted_pyramids.end(), Index{0});
 
   const auto [vmin, vmax] = std::minmax_element(q.volume.begin(), q.volume.end());

@@ -11,6 +11,7 @@
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/octree/octree.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {
 
@@ -27,24 +28,24 @@ struct CutcellOptions {
   // The paper's k: a face interface point that leaves its face splits the leaves around
   // it, down to octree.level + this; past it the centroid of the edge points is used.
   int face_point_levels = 1;
-  // A cut face more skewed than this (OpenFOAM's measure; checkMesh flags faces above 4)
-  // makes the cell try its other triangulations, then merge the face with its neighbours.
-  // Below 4: on a joined (warped) polygon checkMesh measured 4.05 where volmesh had 3.99.
-  double skewness_limit = 3.9;
+  // The limits every stage holds the faces to (OpenFOAM's skewness and non-orthogonality):
+  // a cut face beyond them makes its cell try its other triangulations, then merge the
+  // face with its neighbours; a cell with such a face is split at a reflex edge or merged.
+  CheckMeshLimits limits;
   // Tiny cut cells: a grid vertex whose nearest crossing along an edge lies closer than
   // this fraction of the edge is moved off the interface (exact mode only).
   double vertex_clearance = 0.1;
   // An edge still crossed twice at the deepest level, from its ends' regions into a third
   // between, keeps both crossings (a vertex of the third region splits it) when they lie at
-  // least this fraction of the edge apart (exact mode only); nearer, the one crossing kept
-  // is off by less. At 0.2, builtin:primitives' junction lines were 0.037 h off at level 7;
-  // smaller gaps leave smaller wedge tips that no merge can take (5e-5 h^3 at 0.05).
+  // least this fraction of the edge apart (exact mode only); nearer, one crossing stands for
+  // both, off by less than the gap. Where a thin wedge of the third region pinches out, a
+  // larger gap moves the junction lines farther off, a smaller one keeps thinner wedge tips:
+  // tiny cells that no merge can take.
   double split_gap = 0.05;
-  // Cells that checkMesh would reject (skewness above skewness_limit, an inverted face
-  // pyramid, non-orthogonality of 88° or more) or smaller than merge_volume_ratio * h^3
-  // are merged with one or two neighbours of their region, and a rejected face may be
-  // joined with a face beside it between the same cells, in at most merge_rounds passes
-  // (0: never). No point moves.
+  // Cells that checkMesh would reject (a face beyond `limits`, an inverted face pyramid) or
+  // smaller than merge_volume_ratio * h^3 are merged with one or two neighbours of their
+  // region, and a rejected face may be joined with a face beside it between the same
+  // cells, in at most merge_rounds passes (0: never). No point moves.
   int merge_rounds = 16;
   double merge_volume_ratio = 1e-3;
   double feature_theta = 0.9;  // Kobbelt's sharp-feature thresholds

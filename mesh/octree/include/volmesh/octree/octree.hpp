@@ -17,8 +17,9 @@
 // order. Any change to the tree (split, refine, balance) renumbers the leaves.
 // Lookups (a leaf by anchor and level, the leaf containing a point) search the Morton order
 // within a bucket of a table over the codes' leading bits, about one leaf per bucket (O(1)
-// expected, the table rebuilt in O(n) after a change). A hash map by locational code cost
-// more to rebuild after each refinement pass than all the lookups it served.
+// expected, the table rebuilt in O(n) after a change): the refinement passes change the tree
+// often and look up little between changes, and the table is cheaper to rebuild than a hash
+// map by locational code.
 // Const member functions are thread-safe.
 #include <algorithm>
 #include <array>

@@ -12,6 +12,12 @@
 
 namespace volmesh {
 
+// OpenFOAM checkMesh's thresholds: it flags faces more skewed than kCheckMeshSkewness (its
+// skewThreshold) and fails internal faces non-orthogonal by kCheckMeshNonOrthogonality
+// degrees or more.
+inline constexpr double kCheckMeshSkewness = 4.0;
+inline constexpr double kCheckMeshNonOrthogonality = 90.0;
+
 // Non-orthogonality in degrees, in [0, 180]: the angle between the face area vector and
 //   internal faces: the owner → neighbour cell centre vector (checkMesh's definition);
 //   boundary faces: the owner centre → face centre vector.
@@ -34,7 +40,7 @@ std::vector<std::uint8_t> face_inverted_pyramids(const PolyMesh& mesh, const Cel
 // between the face centre and the point where the centre-to-centre line crosses the face
 // plane, divided by max(0.2·|d|, the face's extent from its centre along that offset);
 // on boundary faces d is the owner's normal distance to the face and the factor 0.4.
-// checkMesh flags faces above 4.
+// checkMesh flags faces above kCheckMeshSkewness.
 std::vector<double> face_skewness(const PolyMesh& mesh, const MeshGeometry& geometry);
 
 // One face at a time, for meshers that weigh alternatives before the mesh exists: the face's
@@ -84,15 +90,21 @@ double face_skewness(const FaceGeometry& face, const Points& points, const Loop&
 // gives 90°, as checkMesh's ROOTVSMALL guard makes it.
 double non_orthogonality_deg(const Vec3& d, const Vec3& s);
 
-// How far one face is from what checkMesh accepts: max(skewness / skewness limit,
-// non-orthogonality / its limit), above 1 where checkMesh flags the face; when a cell centre
-// lies behind the face (checkMesh's incorrectly oriented face pyramid) kInvertedFace and
-// more the farther behind, so that a change that moves it only part of the way back counts
-// as progress.
+// The limits a mesher holds its faces to, so that checkMesh accepts what the mesher accepts.
+// Each lies a margin inside checkMesh's threshold: a mesher judges a face by its own estimate
+// of the geometry before the mesh is final (the cell split from its pieces' exact
+// centroids, not checkMesh's cell centres), and checkMesh measures a warped polygon (a face
+// joined from several) about 1.5% more skewed than volmesh does.
 struct CheckMeshLimits {
-  double skewness = 4.0;
-  double non_orthogonality = 88.0;  // degrees; checkMesh fails at 90
+  double skewness = 3.9;
+  double non_orthogonality = 88.0;  // degrees
 };
+
+// How far one face is from the limits: max(skewness / limits.skewness,
+// non-orthogonality / limits.non_orthogonality), above 1 where the face is rejected; when a
+// cell centre lies behind the face (checkMesh's incorrectly oriented face pyramid)
+// kInvertedFace and more the farther behind, so that a change that moves it only part of
+// the way back counts as progress.
 inline constexpr double kInvertedFace = 1e3;
 template <class Points, class Loop>
 double checkmesh_badness(const FaceGeometry& face, const Points& points, const Loop& loop,

@@ -10,7 +10,6 @@
 namespace volmesh {
 
 inline constexpr double kSevereNonOrthogonalityDeg = 70.0;  // checkMesh's nonOrthThreshold
-inline constexpr double kHighSkewness = 4.0;                // checkMesh's skewThreshold
 
 struct QualityReport {
   Index cells = 0, tets = 0, hexes = 0, polyhedra = 0;
@@ -20,7 +19,7 @@ struct QualityReport {
   Index non_positive_cells = 0;             // volume <= 0, any shape
   Index severely_non_orthogonal_faces = 0;  // internal faces above 70° (checkMesh splits
                                             // these into "severe" and "> 90°" errors)
-  Index highly_skewed_faces = 0;            // faces above 4, boundary faces included
+  Index highly_skewed_faces = 0;            // faces above kCheckMeshSkewness, boundary faces included
   // What makes checkMesh fail, not only warn:
   Index non_orthogonality_errors = 0;  // internal faces at 90° or more
   Index inverted_face_pyramids = 0;    // cell centres behind a face, per face and side

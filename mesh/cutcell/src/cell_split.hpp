@@ -5,11 +5,11 @@
 // polyhedral piece per connected part of each region.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "volmesh/cutcell/loop_triangulation.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
+#include "loop_triangulation.hpp"
+#include "tangent_point.hpp"
+#include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {
 
@@ -74,11 +74,9 @@ struct CellOptions {
   // Two triangles of a component whose points lie within flat * size of each other's plane
   // may swap their diagonal (the surface stays put) when that lowers their skewness.
   double flat = 1e-6;
-  // When a triangle is more skewed than this (OpenFOAM's measure; checkMesh flags faces
-  // above 4), more non-orthogonal (degrees; checkMesh fails at 90) or behind a piece's
-  // centre, the other triangulations of each component are tried.
-  double skewness_limit = 4.0;
-  double max_non_orthogonality = 88.0;
+  // When a triangle lies beyond these limits (checkmesh_badness above 1) or behind a
+  // piece's centre, the other triangulations of each component are tried.
+  CheckMeshLimits limits;
   // The last resort for a triangle still more skewed: merged with neighbouring triangles of
   // its interface whose normals differ by less than this angle (degrees) into one polygon
   // face (a sliver at any angle, except across a sharp edge its component keeps). 0 keeps
@@ -128,9 +126,8 @@ struct CellSplit {
   std::vector<int> polygon_piece;  // the piece of each input polygon
   std::vector<LoopMethod> loops;   // how each component was triangulated
   bool cell_point_left_cell = false;  // the least-squares cell point fell outside; centroid used
-  // How far the worst interface face is from checkMesh's limits, from the pieces' centres:
-  // max(skewness / skewness_limit, non-orthogonality / max_non_orthogonality), 1e3 for a
-  // face behind a centre; above 1: rejected. Boundary faces (region 0 below) as checkMesh
+  // How far the worst interface face is from CellOptions::limits, from the pieces' centres
+  // (checkmesh_badness, kInvertedFace for a face behind a centre); above 1: rejected. Boundary faces (region 0 below) as checkMesh
   // measures those.
   double max_badness = 0.0;
 };
@@ -141,17 +138,5 @@ CellSplit split_cell(const CellInput& cell, const CellOptions& options = {});
 // The union of two faces sharing exactly one edge (u -> v in a, v -> u in b), or empty when
 // they share none or more, or the union would touch itself.
 std::vector<int> merge_along_edge(const std::vector<int>& a, const std::vector<int>& b);
-
-// Distance of p inside the hexahedron with these corners (negative outside), measured from
-// the planes of its faces (through their centres, along their mean normals).
-double depth_inside_cell(const std::array<Vec3, 8>& corners, const Vec3& p);
-// p pushed inside until it lies `margin` from every face plane; nullopt when it lies farther
-// than `reach` outside.
-std::optional<Vec3> clamp_into_cell(const std::array<Vec3, 8>& corners, Vec3 p, double margin,
-                                    double reach);
-// p moved along `direction` (either way, the least distance) until it lies `margin` from
-// every face plane; nullopt when no such move reaches it within `reach`.
-std::optional<Vec3> slide_into_cell(const std::array<Vec3, 8>& corners, const Vec3& p, const Vec3& direction,
-                                    double margin, double reach);
 
 }  // namespace volmesh::cutcell

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "tangent_point.hpp"
 #include "volmesh/core/types.hpp"
-#include "volmesh/cutcell/tangent_point.hpp"
 
 namespace volmesh::cutcell {
 
