@@ -14,7 +14,7 @@
 #include "commands.hpp"
 #include "volmesh/domain/rawiv.hpp"
 #include "volmesh/domain/sdf_compute.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh::cli {

@@ -16,7 +16,7 @@
 #include "volmesh/domain/image.hpp"
 #include "volmesh/domain/rawiv.hpp"
 #include "volmesh/domain/surface_domain.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 using namespace volmesh;

@@ -1,15 +1,16 @@
 // Validation of a triangulated surface as the boundary of a solid, and its measures.
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <span>
 
-#include "surface_exact.hpp"
-#include "surface_file.hpp"
-#include "text_format.hpp"
+#include "triangle_predicates.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
 
 namespace volmesh {
 
@@ -125,8 +126,9 @@ void check_points_finite(const TriSurface& surface, const std::string& source) {
     if (!p.allFinite()) {
       std::string coordinates;
       for (int k = 0; k < 3; ++k) {
+        char digits[32];  // shortest text that reads back to the same double
         if (k > 0) coordinates += ' ';
-        append_number(coordinates, p[k]);
+        coordinates.append(digits, std::to_chars(digits, digits + sizeof digits, p[k]).ptr);
       }
       throw InputError(source + ": vertex " + std::to_string(i) + ": coordinate is not finite (" +
                        coordinates + ")");
@@ -142,7 +144,7 @@ void check_not_degenerate(const TriSurface& surface, const std::string& source) 
         throw InputError(source + ": triangle " + std::to_string(t) + ": degenerate, vertex " +
                          std::to_string(tri[k]) + " appears twice");
   }
-  if (auto t = surface_detail::first_collinear_triangle(surface)) {
+  if (auto t = geometry_detail::first_collinear_triangle(surface)) {
     const auto& tri = surface.triangles[*t];
     throw InputError(source + ": triangle " + std::to_string(*t) + ": degenerate, its vertices " +
                      std::to_string(tri[0]) + ", " + std::to_string(tri[1]) + ", " +
@@ -184,7 +186,7 @@ void measure(const TriSurface& surface, SurfaceReport& report) {
 SurfaceReport check_surface(TriSurface& surface, const std::string& source,
                             const SurfaceCheckOptions& options) {
   if (surface.triangles.empty()) throw InputError(source + ": surface has no triangles");
-  surface_detail::require_valid_indices(surface, source);
+  require_valid_indices(surface, source);
   check_points_finite(surface, source);
   check_not_degenerate(surface, source);
   const std::vector<EdgeUse> uses = edge_uses(surface);

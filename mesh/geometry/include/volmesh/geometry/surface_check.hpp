@@ -1,6 +1,9 @@
 #pragma once
-// Validation of a triangulated surface as the boundary of a solid.
-#include <filesystem>
+// Validation of a triangulated surface as the boundary of a solid: topology (closed,
+// manifold, consistently oriented) and exact geometry (no collinear corners; intersecting
+// triangles reported). It reads no file: the surface readers check syntax and indices only,
+// and any TriSurface, read or built, is checked here before it bounds a solid.
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,12 +38,5 @@ struct SurfaceCheckOptions {
 // caller decides whether they are fatal.
 SurfaceReport check_surface(TriSurface& surface, const std::string& source,
                             const SurfaceCheckOptions& options = {});
-
-// Pairs of triangles (i < j, sorted) that intersect in more than a shared vertex or edge,
-// using CGAL's exact predicates; any triangle soup is accepted, degenerate triangles are
-// skipped. At most max_pairs are returned; *truncated tells whether more exist.
-std::vector<std::pair<Index, Index>> find_self_intersections(const TriSurface& surface,
-                                                             std::size_t max_pairs,
-                                                             bool* truncated = nullptr);
 
 }  // namespace volmesh

@@ -1,10 +1,10 @@
-#include "volmesh/io/polygon_split.hpp"
+#include "volmesh/geometry/polygon_split.hpp"
 
 #include <Eigen/Core>
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/tri_surface.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
 
 namespace volmesh {
 namespace {

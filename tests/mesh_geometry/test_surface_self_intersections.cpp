@@ -2,8 +2,8 @@
 // two triangles can meet (sharing nothing, a vertex, an edge or everything).
 #include <gtest/gtest.h>
 
-#include "test_surface_support.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "../support/surfaces.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
 
 namespace volmesh {
 namespace {

@@ -10,9 +10,8 @@
 
 #include <algorithm>
 
-#include "surface_exact.hpp"
-#include "surface_file.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "triangle_predicates.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
 
 namespace volmesh {
 
@@ -70,7 +69,7 @@ bool triangles_intersect(const TriSurface& surface, Index i, Index j) {
 
 }  // namespace
 
-std::optional<Index> surface_detail::first_collinear_triangle(const TriSurface& surface) {
+std::optional<Index> geometry_detail::first_collinear_triangle(const TriSurface& surface) {
   for (Index t = 0; t < surface.num_triangles(); ++t)
     if (collinear(surface, surface.triangles[t])) return t;
   return std::nullopt;
@@ -79,7 +78,7 @@ std::optional<Index> surface_detail::first_collinear_triangle(const TriSurface& 
 std::vector<std::pair<Index, Index>> find_self_intersections(const TriSurface& surface,
                                                              std::size_t max_pairs,
                                                              bool* truncated) {
-  surface_detail::require_valid_indices(surface, "surface");
+  require_valid_indices(surface, "surface");
   // Degenerate triangles have no well-defined intersections; check_surface refuses them.
   std::vector<Box> boxes;
   boxes.reserve(surface.triangles.size());

@@ -1,5 +1,5 @@
 #pragma once
-// Surfaces, fixture paths and helpers shared by the surface I/O tests.
+// Surfaces, fixture paths and helpers shared by the surface I/O and surface check tests.
 #include <array>
 #include <cmath>
 #include <filesystem>

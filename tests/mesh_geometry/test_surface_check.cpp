@@ -6,8 +6,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "test_surface_support.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "../support/surfaces.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh {
