@@ -20,8 +20,8 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
 #include "volmesh/core/validity.hpp"
-#include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/open_domain.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/octree/staircase.hpp"
 

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "volmesh/domain/rawiv.hpp"
 #include "volmesh/domain/sdf_compute.hpp"
 #include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 namespace volmesh::cli {
 

@@ -15,7 +15,7 @@
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/domain_file.hpp"
+#include "volmesh/io/domain_file.hpp"
 #include "volmesh/octree/staircase.hpp"
 
 namespace volmesh::geometry {

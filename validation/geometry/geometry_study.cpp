@@ -24,7 +24,7 @@
 #include "geometric_error.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/domain_file.hpp"
+#include "volmesh/io/domain_file.hpp"
 #include "volmesh/octree/staircase.hpp"
 
 namespace {

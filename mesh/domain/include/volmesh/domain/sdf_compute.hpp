@@ -9,7 +9,8 @@
 #include <string>
 
 #include "volmesh/core/tri_surface.hpp"
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/core/voxel_grid.hpp"
+#include "volmesh/domain/domain.hpp"  // Box3
 
 namespace volmesh {
 

@@ -1,36 +1,13 @@
 #pragma once
-// Scalar fields sampled on a regular grid, such as the signed-distance voxels of the hexdc
-// method (DESIGN.md §4), and the Domain they define: positive inside, negative outside, as
-// in the hex paper.
+// A scalar grid's field as a Domain: the signed-distance voxels of the hexdc method
+// (VoxelGrid, core/voxel_grid.hpp), positive inside, negative outside, as in the hex paper.
 #include <array>
 #include <cstdint>
-#include <filesystem>
-#include <vector>
 
+#include "volmesh/core/voxel_grid.hpp"
 #include "volmesh/domain/domain.hpp"
 
 namespace volmesh {
-
-struct VoxelGrid {
-  std::array<Index, 3> dims{};  // samples along x, y, z, each >= 2
-  Vec3 origin = Vec3::Zero();   // position of sample (0, 0, 0)
-  Vec3 spacing = Vec3::Ones();  // distance between neighbouring samples, > 0
-  std::vector<float> values;    // x fastest, finite
-
-  std::int64_t index(Index i, Index j, Index k) const {
-    return i + static_cast<std::int64_t>(dims[0]) * (j + static_cast<std::int64_t>(dims[1]) * k);
-  }
-  float at(Index i, Index j, Index k) const { return values[index(i, j, k)]; }
-  Vec3 point(Index i, Index j, Index k) const {
-    return origin + spacing.cwiseProduct(Vec3(i, j, k));
-  }
-};
-
-// By extension (case-insensitive): .rawiv (rawiv.hpp), .vti (VTK image data: the point
-// scalars, or the only point array, of one component), .nrrd (any sample type; stored as
-// float). Throws InputError naming the file and the field on anything wrong.
-VoxelGrid read_voxel_grid(const std::filesystem::path& path);
-VoxelGrid read_vti(const std::filesystem::path& path);
 
 // The grid's field f as a Domain, f being the trilinear interpolant of the samples on the
 // grid's box (region 0 outside the box).

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/image.hpp"
+#include "volmesh/io/label_image_io.hpp"
 #include "voxel_samples.hpp"
 
 namespace volmesh {

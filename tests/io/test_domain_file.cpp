@@ -3,9 +3,9 @@
 // and the JSON path.
 #include <gtest/gtest.h>
 
-#include "test_image_support.hpp"
-#include "volmesh/domain/domain_file.hpp"
+#include "../support/images.hpp"
 #include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/io/domain_file.hpp"
 
 namespace volmesh {
 namespace {

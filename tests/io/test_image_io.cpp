@@ -6,8 +6,8 @@
 #include <bit>
 #include <cstring>
 
-#include "test_image_support.hpp"
-#include "volmesh/domain/image.hpp"
+#include "../support/images.hpp"
+#include "volmesh/io/label_image_io.hpp"
 
 namespace volmesh {
 namespace {

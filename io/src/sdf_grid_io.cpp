@@ -3,7 +3,7 @@
 #include <limits>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/rawiv.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 #include "voxel_samples.hpp"
 
 namespace volmesh {

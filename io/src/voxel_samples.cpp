@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "text_format.hpp"
 #include "volmesh/core/errors.hpp"
 
 namespace volmesh::voxel {
@@ -31,8 +32,9 @@ std::string sample_position(const std::array<Index, 3>& dims, std::int64_t n) {
 }
 
 std::string format_number(double x) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+  std::string text;
+  append_number(text, x);
+  return text;
 }
 
 namespace {

@@ -1,10 +1,12 @@
-// A real segmentation: liver.inr.gz from Debian's libcgal-demo data (CGAL's own example).
+// A real segmentation: liver.inr.gz from Debian's libcgal-demo data (CGAL's own example),
+// read and queried as a Domain.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <vector>
 
 #include "volmesh/domain/image.hpp"
+#include "volmesh/io/label_image_io.hpp"
 
 namespace volmesh {
 namespace {

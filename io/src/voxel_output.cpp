@@ -1,12 +1,11 @@
 #include "voxel_output.hpp"
 
-#include <unistd.h>
 #include <zlib.h>
 
 #include <fstream>
 #include <stdexcept>
-#include <system_error>
 
+#include "atomic_output.hpp"
 #include "voxel_samples.hpp"
 
 namespace volmesh::voxel {
@@ -43,28 +42,13 @@ std::string gzip(std::string_view data) {
 }
 
 void write_atomically(const fs::path& path, std::initializer_list<std::string_view> parts) {
-  // Same directory as the target, so that the rename cannot cross file systems.
-  const fs::path temporary =
-      path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, "cannot open for writing");
-    for (std::string_view part : parts)
-      out.write(part.data(), static_cast<std::streamsize>(part.size()));
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(temporary, ec);
-      fail(path, "write error");
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    fail(path, "cannot write (" + ec.message() + ")");
-  }
+  AtomicOutput output(path);
+  std::ofstream out = output.open_stream();
+  for (std::string_view part : parts)
+    out.write(part.data(), static_cast<std::streamsize>(part.size()));
+  out.close();
+  if (!out) fail(path, "write error");
+  output.commit();
 }
 
 }  // namespace volmesh::voxel

@@ -1,16 +1,18 @@
 // The command line's <domain> argument: a built-in name, or a file chosen by its extension
 // (a .nrrd by its header's sample type).
-#include "volmesh/domain/open_domain.hpp"
+#include "volmesh/io/open_domain.hpp"
 
 #include <fstream>
 
 #include "volmesh/core/errors.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/domain_file.hpp"
 #include "volmesh/domain/image.hpp"
 #include "volmesh/domain/surface_domain.hpp"
 #include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/io/domain_file.hpp"
+#include "volmesh/io/label_image_io.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 #include "voxel_samples.hpp"
 
 namespace volmesh {

@@ -10,6 +10,7 @@
 
 #include <string>
 
+#include "volmesh/io/voxel_grid_io.hpp"
 #include "voxel_samples.hpp"
 
 namespace volmesh {

@@ -1,6 +1,6 @@
 // Domain files (.json): parsed with nlohmann::json; every value is read through a JsonValue
 // that knows its path in the file, so that an error names the file and the path.
-#include "volmesh/domain/domain_file.hpp"
+#include "volmesh/io/domain_file.hpp"
 
 #include <cmath>
 #include <fstream>

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "../support/temp_dir.hpp"
+#include "temp_dir.hpp"
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/image.hpp"
+#include "volmesh/io/label_image_io.hpp"
 
 namespace volmesh::image_test {
 

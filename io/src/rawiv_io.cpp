@@ -2,7 +2,7 @@
 #include <cmath>
 #include <string>
 
-#include "volmesh/domain/rawiv.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 #include "voxel_output.hpp"
 #include "voxel_samples.hpp"
 #include "voxel_stream.hpp"

@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
-#include "volmesh/core/types.hpp"
-#include "volmesh/domain/voxel_grid.hpp"
 #include "volmesh/core/byte_order.hpp"
+#include "volmesh/core/types.hpp"
+#include "volmesh/core/voxel_grid.hpp"
 
 namespace volmesh::voxel {
 

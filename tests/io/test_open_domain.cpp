@@ -4,13 +4,14 @@
 
 #include <cstring>
 
-#include "test_image_support.hpp"
+#include "../support/images.hpp"
 #include "volmesh/domain/image.hpp"
 #include "volmesh/domain/layered_domain.hpp"
-#include "volmesh/domain/open_domain.hpp"
-#include "volmesh/domain/rawiv.hpp"
 #include "volmesh/domain/surface_domain.hpp"
 #include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/io/label_image_io.hpp"
+#include "volmesh/io/open_domain.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 namespace volmesh {
 namespace {
