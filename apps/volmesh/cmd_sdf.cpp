@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "volmesh/domain/sdf_compute.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/io/voxel_grid_io.hpp"

@@ -9,7 +9,7 @@
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/structured.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 #include "volmesh/fem/finite_volume.hpp"
 #include "volmesh/octree/staircase.hpp"
 

@@ -8,10 +8,10 @@
 #include <numbers>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/csg.hpp"
-#include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
+#include "volmesh/domain/layered.hpp"
 #include "volmesh/domain/prioritized.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh {

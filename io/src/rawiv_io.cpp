@@ -1,4 +1,4 @@
-// .rawiv reading and writing (format in rawiv.hpp).
+// .rawiv reading and writing (format in voxel_grid_io.hpp).
 #include <cmath>
 #include <string>
 

@@ -6,7 +6,7 @@
 
 #include "cut_grid.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 #include "../domain/test_surface_domain_support.hpp"
 
 namespace volmesh::cutcell {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/domain/grid.hpp"
 
 namespace volmesh {
 namespace {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/images.hpp"
-#include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/domain/layered.hpp"
 #include "volmesh/io/domain_file.hpp"
 
 namespace volmesh {

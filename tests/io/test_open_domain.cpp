@@ -6,9 +6,9 @@
 
 #include "../support/images.hpp"
 #include "volmesh/domain/image.hpp"
-#include "volmesh/domain/layered_domain.hpp"
-#include "volmesh/domain/surface_domain.hpp"
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/domain/layered.hpp"
+#include "volmesh/domain/surface.hpp"
+#include "volmesh/domain/grid.hpp"
 #include "volmesh/io/label_image_io.hpp"
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/io/voxel_grid_io.hpp"

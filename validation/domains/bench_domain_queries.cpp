@@ -14,8 +14,8 @@
 
 #include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/image.hpp"
-#include "volmesh/domain/surface_domain.hpp"
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/domain/surface.hpp"
+#include "volmesh/domain/grid.hpp"
 #include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/label_image_io.hpp"
 #include "volmesh/io/surface_io.hpp"

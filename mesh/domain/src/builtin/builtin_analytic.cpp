@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "builtin_entries.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

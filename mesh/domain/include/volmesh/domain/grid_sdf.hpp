@@ -29,7 +29,7 @@ VoxelGrid sdf_layout(const Box3& box, Index dim, double margin);
 
 class SignedDistance {
  public:
-  // Throws InputError "NAME: ..." as a SurfaceDomain does (surface_domain.hpp).
+  // Throws InputError "NAME: ..." as a SurfaceDomain does (surface.hpp).
   SignedDistance(TriSurface surface, const std::string& name);
   ~SignedDistance();
   SignedDistance(SignedDistance&&) noexcept;

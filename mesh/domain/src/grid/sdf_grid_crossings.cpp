@@ -8,8 +8,8 @@
 // next cell's entry value, so that the two cells cannot disagree about a root on their face.
 #include <cmath>
 
-#include "volmesh/domain/voxel_grid.hpp"
-#include "voxel_dda.hpp"
+#include "common/voxel_dda.hpp"
+#include "volmesh/domain/grid.hpp"
 #include "voxel_trilinear.hpp"
 
 namespace volmesh {

@@ -1,5 +1,5 @@
 // Surface domains: nesting, regions and normals (crossings in surface_crossings.cpp).
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/domain/grid.hpp"
 #include "voxel_trilinear.hpp"
 
 namespace volmesh {

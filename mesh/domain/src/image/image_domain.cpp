@@ -4,8 +4,8 @@
 #include <functional>
 #include <stdexcept>
 
+#include "common/voxel_dda.hpp"
 #include "volmesh/domain/image.hpp"
-#include "voxel_dda.hpp"
 
 namespace volmesh {
 

@@ -1,6 +1,6 @@
 // Layered domains: the model's checks, regions, nearest interfaces and normals (crossings in
 // layered_crossings.cpp).
-#include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/domain/layered.hpp"
 
 #include <cmath>
 #include <limits>

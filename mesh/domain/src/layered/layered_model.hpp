@@ -1,5 +1,5 @@
 #pragma once
-// What a LayeredDomain holds (layered_domain.hpp describes the model): its sheets as exact
+// What a LayeredDomain holds (layered.hpp describes the model): its sheets as exact
 // graphs, the blocks of horizons, and the trees for segment and nearest-point queries.
 #include <algorithm>
 #include <array>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "surface_closest.hpp"
-#include "surface_exact.hpp"
-#include "surface_geometry.hpp"
-#include "volmesh/domain/layered_domain.hpp"
+#include "surface/surface_closest.hpp"
+#include "surface/surface_exact.hpp"
+#include "surface/surface_geometry.hpp"
+#include "volmesh/domain/layered.hpp"
 
 namespace volmesh::layers {
 

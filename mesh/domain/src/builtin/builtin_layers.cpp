@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "builtin_entries.hpp"
-#include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/domain/layered.hpp"
 
 namespace volmesh {
 namespace {

@@ -1,7 +1,7 @@
 // CSG expressions as a flat node list, evaluated on the set of primitives containing a point.
 #include <utility>
 
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 

@@ -3,7 +3,7 @@
 // samples are visited in a snake, each query starting from the previous sample's triangle,
 // which bounds the search tightly from the start. A slice starts afresh, so the values do
 // not depend on which core computes which slice.
-#include "volmesh/domain/sdf_compute.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -12,7 +12,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "surface_closest.hpp"
+#include "surface/surface_closest.hpp"
 
 namespace volmesh {
 

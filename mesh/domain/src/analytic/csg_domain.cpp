@@ -3,7 +3,7 @@
 #include <string>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 

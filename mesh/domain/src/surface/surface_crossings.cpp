@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "surface_domain_data.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh {
 
