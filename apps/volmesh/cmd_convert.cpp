@@ -6,8 +6,8 @@
 #include "mesh_input.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/mesh_io.hpp"
-#include "volmesh/io/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh::cli {

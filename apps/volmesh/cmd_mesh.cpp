@@ -16,8 +16,8 @@
 #include "reports.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
-#include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/open_domain.hpp"
 #include "volmesh/meshers/registry.hpp"
 #include "volmesh/octree/octree.hpp"
 

@@ -10,10 +10,11 @@
 
 #include "commands.hpp"
 #include "progress_line.hpp"
-#include "volmesh/domain/rawiv.hpp"
-#include "volmesh/domain/sdf_compute.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
+#include "volmesh/geometry/surface_check.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 namespace volmesh::cli {
 

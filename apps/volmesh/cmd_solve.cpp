@@ -13,8 +13,8 @@
 #include "solve_setup.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
-#include "volmesh/domain/open_domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/open_domain.hpp"
 #include "volmesh/meshers/registry.hpp"
 
 namespace volmesh::cli {

@@ -5,7 +5,7 @@
 
 #include "mesh_input.hpp"
 #include "volmesh/core/validity.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/quality/report.hpp"
 
 namespace volmesh::cli {

@@ -4,7 +4,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 #include "volmesh/fem/finite_volume.hpp"
 
 namespace volmesh::cli {

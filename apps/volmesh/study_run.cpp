@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/open_domain.hpp"
+#include "volmesh/io/open_domain.hpp"
 
 namespace volmesh::cli {
 

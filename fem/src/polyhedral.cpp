@@ -5,7 +5,7 @@
 
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/tri_surface.hpp"
-#include "volmesh/io/polygon_split.hpp"
+#include "volmesh/geometry/polygon_split.hpp"
 
 namespace volmesh::fem {
 namespace {

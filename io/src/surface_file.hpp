@@ -45,21 +45,6 @@ inline Index checked_count(const std::filesystem::path& path, std::uint64_t coun
   return static_cast<Index>(count);
 }
 
-inline std::string vertex_index_error(std::int64_t index, Index num_points) {
-  return "vertex index " + std::to_string(index) + " out of range (" + std::to_string(num_points) +
-         " vertices)";
-}
-
-// Writers and the checker refuse a surface whose triangles point outside its points.
-inline void require_valid_indices(const TriSurface& surface, const std::string& source) {
-  const Index n = surface.num_points();
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t)
-    for (Index v : surface.triangles[t])
-      if (v < 0 || v >= n)
-        throw InputError(source + ": triangle " + std::to_string(t) + ": " +
-                         vertex_index_error(v, n));
-}
-
 // Splits a polygon into a fan around its first corner as its corners arrive. The result is
 // right for convex (and star-shaped around that corner) polygons, which is what polygonal
 // OFF/OBJ/PLY faces are in practice; check_surface catches the rest as degenerate or

@@ -4,7 +4,7 @@
 
 #include "cell_planes.hpp"
 #include "unit_cube.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {
@@ -110,7 +110,7 @@ TEST(CellSplit, BoxCornerInsideTheCellIsAFeaturePoint) {
   EXPECT_LT((split.new_points[0] - Vec3(0.7, 0.6, 0.4)).norm(), 1e-12);
 }
 
-// Labelled boxes: later ones win (csg.hpp), the first covers the cube.
+// Labelled boxes: later ones win (analytic_csg.hpp), the first covers the cube.
 AnalyticDomain layers(const std::vector<std::pair<Box, Index>>& boxes) {
   std::vector<Layer> l;
   for (const auto& [b, label] : boxes) l.push_back({box(b.lo, b.hi), label});

@@ -13,7 +13,7 @@
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/io/polygon_split.hpp"
+#include "volmesh/geometry/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {

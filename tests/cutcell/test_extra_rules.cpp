@@ -10,7 +10,7 @@
 #include "extra_rules.hpp"
 #include "volmesh/domain/analytic.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 #include "../domain/test_surface_domain_support.hpp"
 
 namespace volmesh::cutcell {

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "test_analytic_support.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

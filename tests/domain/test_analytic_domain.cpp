@@ -8,7 +8,7 @@
 #include "test_analytic_support.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

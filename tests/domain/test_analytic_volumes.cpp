@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "test_analytic_support.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

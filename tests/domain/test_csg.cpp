@@ -6,7 +6,7 @@
 
 #include "test_analytic_support.hpp"
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 
 namespace volmesh {
 namespace {

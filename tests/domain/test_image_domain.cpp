@@ -5,8 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "test_image_support.hpp"
+#include "../support/images.hpp"
 #include "volmesh/domain/image.hpp"
+#include "volmesh/io/label_image_io.hpp"
 
 namespace volmesh {
 namespace {

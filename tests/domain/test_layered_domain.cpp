@@ -7,7 +7,7 @@
 #include <random>
 
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/layered_domain.hpp"
+#include "volmesh/domain/layered.hpp"
 #include "volmesh/domain/prioritized.hpp"
 
 namespace volmesh {

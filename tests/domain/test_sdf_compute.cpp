@@ -7,7 +7,7 @@
 
 #include "test_surface_domain_support.hpp"
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/sdf_compute.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
 
 namespace volmesh {
 namespace {

@@ -5,7 +5,7 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include "test_surface_domain_support.hpp"
-#include "volmesh/domain/sdf_compute.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
 
 namespace volmesh {
 namespace {

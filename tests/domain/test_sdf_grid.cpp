@@ -1,21 +1,14 @@
 // Signed-distance voxels as a Domain: second-order crossings and first-order normals on a
-// sampled sphere, exact roots of the trilinear interpolant, exact zeros, the box faces, and
-// scalar grids read from .vti and .nrrd.
+// sampled sphere, exact roots of the trilinear interpolant, exact zeros, the box faces.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <random>
 
-#include "test_image_support.hpp"
-#include "volmesh/domain/voxel_grid.hpp"
+#include "volmesh/domain/grid.hpp"
 
 namespace volmesh {
 namespace {
-
-using image_test::expect_input_error;
-using image_test::TempDir;
-using image_test::write_bytes;
 
 const Vec3 kCentre(0.03, -0.02, 0.01);
 constexpr double kRadius = 0.6;
@@ -191,54 +184,6 @@ TEST(SdfGrid, CrossingsChainOnRandomSegments) {
     }
     EXPECT_EQ(current, domain.region(b));
   }
-}
-
-TEST(SdfGrid, ReadsScalarFieldsFromVtiAndNrrd) {
-  TempDir dir;
-  // 3 x 2 x 2 points, extent starting at 1 along x: the first point is at origin + spacing.x.
-  std::string values;
-  for (int v = 0; v < 12; ++v) values += std::to_string(v - 5.5) + " ";
-  write_bytes(dir / "f.vti",
-              "<?xml version=\"1.0\"?>\n"
-              "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-              "<ImageData WholeExtent=\"1 3 0 1 0 1\" Origin=\"0.5 -1 2\" Spacing=\"0.25 0.5 1\">\n"
-              "<Piece Extent=\"1 3 0 1 0 1\"><PointData Scalars=\"sdf\">\n"
-              "<DataArray type=\"Float64\" Name=\"sdf\" format=\"ascii\">" +
-                  values +
-                  "</DataArray>\n"
-                  "</PointData><CellData/></Piece></ImageData></VTKFile>\n");
-  const VoxelGrid vti = read_voxel_grid(dir / "f.vti");
-  EXPECT_EQ(vti.dims, (std::array<Index, 3>{3, 2, 2}));
-  EXPECT_EQ(vti.origin, Vec3(0.75, -1.0, 2.0));
-  EXPECT_EQ(vti.spacing, Vec3(0.25, 0.5, 1.0));
-  for (int v = 0; v < 12; ++v) EXPECT_EQ(vti.values[v], static_cast<float>(v - 5.5));
-
-  std::string nrrd =
-      "NRRD0004\ntype: float\ndimension: 3\nsizes: 3 2 2\nspacings: 0.25 0.5 1\nencoding: "
-      "raw\nendian: " +
-      std::string(std::endian::native == std::endian::big ? "big" : "little") + "\n\n";
-  for (int v = 0; v < 12; ++v) {
-    const float x = static_cast<float>(v - 5.5);
-    nrrd.append(reinterpret_cast<const char*>(&x), 4);
-  }
-  write_bytes(dir / "f.nrrd", nrrd);
-  EXPECT_EQ(read_voxel_grid(dir / "f.nrrd").values, vti.values);
-  // A double beyond float's range is refused, not turned into infinity.
-  std::string wide = "NRRD0004\ntype: double\ndimension: 3\nsizes: 2 2 2\nencoding: raw\nendian: " +
-                     std::string(std::endian::native == std::endian::big ? "big" : "little") +
-                     "\n\n";
-  for (int v = 0; v < 8; ++v) {
-    const double x = v == 6 ? 1e300 : 1.0;
-    wide.append(reinterpret_cast<const char*>(&x), 8);
-  }
-  write_bytes(dir / "wide.nrrd", wide);
-  expect_input_error([&] { read_voxel_grid(dir / "wide.nrrd"); },
-                     {"wide.nrrd: ", "sample (0, 1, 1)", "1e+300", "not finite"});
-
-  write_bytes(dir / "bad.vti", "<VTKFile type=\"ImageData\"><broken");
-  expect_input_error([&] { read_voxel_grid(dir / "bad.vti"); }, {"bad.vti: "});
-  expect_input_error([&] { read_voxel_grid(dir / "none.vti"); }, {"none.vti: "});
-  expect_input_error([&] { read_voxel_grid(dir / "f.stl"); }, {"f.stl: ", ".rawiv"});
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 
 #include "test_surface_domain_support.hpp"
 #include "volmesh/core/errors.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh {
 namespace {

@@ -5,7 +5,7 @@
 #include <random>
 
 #include "test_surface_domain_support.hpp"
-#include "volmesh/domain/surface_domain.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh {
 namespace {

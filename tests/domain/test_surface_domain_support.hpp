@@ -15,7 +15,7 @@
 #include <string>
 
 #include "volmesh/core/tri_surface.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 
 namespace volmesh::surface_test {

@@ -8,7 +8,7 @@
 
 #include "volmesh/domain/analytic.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/csg.hpp"
+#include "volmesh/domain/analytic_csg.hpp"
 #include "volmesh/fem/problems.hpp"
 
 namespace volmesh::fem {

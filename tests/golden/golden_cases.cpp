@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "volmesh/domain/open_domain.hpp"
+#include "volmesh/io/open_domain.hpp"
 #include "volmesh/fem/fem.hpp"
 #include "volmesh/fem/problems.hpp"
 #include "volmesh/meshers/registry.hpp"

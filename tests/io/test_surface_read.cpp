@@ -4,8 +4,8 @@
 
 #include <fstream>
 
-#include "test_surface_support.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "../support/surfaces.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "writer_fixtures.hpp"
 

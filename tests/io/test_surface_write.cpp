@@ -2,8 +2,8 @@
 // deterministic, and a failed write leaves nothing behind.
 #include <gtest/gtest.h>
 
-#include "test_surface_support.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "../support/surfaces.hpp"
+#include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "writer_fixtures.hpp"
 

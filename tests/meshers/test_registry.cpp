@@ -9,7 +9,7 @@
 
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
-#include "volmesh/domain/open_domain.hpp"
+#include "volmesh/io/open_domain.hpp"
 #include "volmesh/meshers/registry.hpp"
 
 namespace volmesh::meshers {

@@ -14,10 +14,12 @@
 
 #include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/image.hpp"
-#include "volmesh/domain/rawiv.hpp"
-#include "volmesh/domain/surface_domain.hpp"
-#include "volmesh/io/surface_check.hpp"
+#include "volmesh/domain/surface.hpp"
+#include "volmesh/domain/grid.hpp"
+#include "volmesh/geometry/surface_check.hpp"
+#include "volmesh/io/label_image_io.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 using namespace volmesh;
 using Clock = std::chrono::steady_clock;

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "volmesh/domain/rawiv.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 3) {

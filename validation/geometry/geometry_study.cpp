@@ -25,7 +25,7 @@
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
 #include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/domain_file.hpp"
+#include "volmesh/io/domain_file.hpp"
 #include "volmesh/octree/staircase.hpp"
 #include "volmesh/quality/analytic_surfaces.hpp"
 

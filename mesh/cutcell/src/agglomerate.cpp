@@ -12,7 +12,7 @@
 
 #include "volmesh/core/geometry.hpp"
 #include "cell_split.hpp"
-#include "volmesh/io/polygon_split.hpp"
+#include "volmesh/geometry/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh::cutcell {

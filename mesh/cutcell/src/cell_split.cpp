@@ -4,7 +4,7 @@
 #include "cell_split.hpp"
 
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/io/polygon_split.hpp"
+#include "volmesh/geometry/polygon_split.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 #include <algorithm>

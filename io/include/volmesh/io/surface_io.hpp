@@ -1,7 +1,8 @@
 #pragma once
 // Reading and writing triangulated surfaces: STL (ascii and binary), OFF, OBJ, PLY.
 // Readers throw InputError with one line naming the file and what is wrong; they check
-// syntax and indices only. Geometric and topological checks are in surface_check.hpp.
+// syntax and indices only. Geometric and topological checks are in
+// volmesh/geometry/surface_check.hpp.
 // Counts in headers are checked against the file size and the 32-bit index limit before
 // anything is allocated. Polygons with more than three corners (OFF, OBJ, PLY) are split into
 // fans around their first corner, which is right for convex polygons.

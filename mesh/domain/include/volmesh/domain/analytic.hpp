@@ -3,8 +3,8 @@
 // motions, and the domain they partition space into. Each primitive is an implicit solid
 // (closed: its surface belongs to it) with an exact segment intersection and an exact
 // normal. The domain maps the set of primitives containing a point — a bitmask, bit i for
-// primitive i — to a region through a table: CSG solids and labelled layers (csg.hpp) and
-// the multi-material mode (below) are all such tables.
+// primitive i — to a region through a table: CSG solids and labelled layers
+// (analytic_csg.hpp) and the multi-material mode (below) are all such tables.
 #include <cstdint>
 #include <span>
 #include <string>

@@ -16,7 +16,7 @@
 //   cube-inclusion  the cube [0, 8]^3 (region 1, surface "outer") with a 3 x 3 x 3 cube
 //                   centred at (4, 4, 4) and rotated by the z-x-z Euler angles
 //                   (pi/4, pi/6, 0) (region 2, surface "inclusion")
-//   layers6         the octree paper's Table 2 case (layered_domain.hpp): six layers,
+//   layers6         the octree paper's Table 2 case (layered.hpp): six layers,
 //                   labels 1 to 6 from the bottom, in the unit cube, between five horizons
 //                   z = k/6 + undulations of up to 0.045 (sums of sines, 129 x 129 vertices
 //                   each); layer 3 pinches out where y < 0.35 - 0.1 sin(4 pi x) (horizon 3

@@ -1,43 +1,13 @@
 #pragma once
-// Labelled images (segmentations) as domains: INRIA .inr / .inr.gz and NRRD files whose voxel
-// values are region labels, 0 being outside.
-#include <array>
+// Labelled images (segmentations) as domains: the voxel values are region labels, 0 being
+// outside. The image comes from a file (label_image_io.hpp in io) or from memory.
 #include <cstdint>
-#include <filesystem>
-#include <span>
 #include <vector>
 
+#include "volmesh/core/label_image.hpp"
 #include "volmesh/domain/domain.hpp"
 
 namespace volmesh {
-
-// Voxel (i, j, k) is the box of size `spacing` centred at origin + (i, j, k) * spacing, and
-// the image is constant on each voxel.
-struct LabelImage {
-  std::array<Index, 3> dims{};       // voxels along x, y, z
-  Vec3 spacing = Vec3::Ones();       // voxel size, > 0
-  Vec3 origin = Vec3::Zero();        // centre of voxel (0, 0, 0)
-  std::vector<Index> labels;         // 0, then the other labels that occur, ascending
-  std::vector<std::uint16_t> codes;  // per voxel, x fastest: the position of its label in `labels`
-
-  std::int64_t index(Index i, Index j, Index k) const {
-    return i + static_cast<std::int64_t>(dims[0]) * (j + static_cast<std::int64_t>(dims[1]) * k);
-  }
-  Index label(Index i, Index j, Index k) const { return labels[codes[index(i, j, k)]]; }
-};
-
-// From one label per voxel, x fastest: labels are integers >= 0, at most 65536 distinct ones,
-// at most 2^31 - 1 voxels. Throws InputError (naming "label image") otherwise.
-LabelImage make_label_image(const std::array<Index, 3>& dims, const Vec3& spacing,
-                            const Vec3& origin, std::span<const Index> voxel_labels);
-
-// .inr, .inr.gz or .nrrd, by extension (case-insensitive). Sample types: 8-, 16-, 32-bit
-// integers and floats holding integer values >= 0. Throws InputError naming the file and the
-// header field or voxel on anything wrong (dims, spacing, sample type, data size).
-LabelImage read_label_image(const std::filesystem::path& path);
-// .inr, .inr.gz, or .nrrd (gzip encoding), in the smallest of uint8 / uint16 / int32 that
-// holds the labels. The file is replaced atomically.
-void write_label_image(const LabelImage& image, const std::filesystem::path& path);
 
 // The image as a Domain.
 //  - region(p): the label of the voxel whose centre is nearest to p, 0 outside the image; on a
