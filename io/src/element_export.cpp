@@ -31,7 +31,8 @@ std::vector<CellCorners> classify_elements(const PolyMesh& mesh, const CellFaces
     if (cells[c].shape == CellShape::Polyhedron)
       throw InputError(file.string() + ": cell " + std::to_string(c) + " is a polyhedron with " +
                        std::to_string(cell_faces.of(c).size()) + " faces; " + std::string(format) +
-                       " output takes tetrahedra and hexahedra only");
+                       " output takes tetrahedra and hexahedra only (convert with --decompose "
+                       "tets)");
   }
   return cells;
 }

@@ -1,5 +1,6 @@
 // VTU input through VTK's XML reader: tetrahedra, hexahedra, wedges, pyramids and polyhedra
-// become PolyMesh cells; "region" cell data and the writer's boundary tags are read back.
+// become PolyMesh cells, in the order "cell_id" gives (vtu_cell_order.hpp); "region" cell
+// data and the writer's boundary tags are read back.
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
@@ -9,8 +10,11 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
+#include <numeric>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +23,7 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "vtu_boundary_tags.hpp"
+#include "vtu_cell_order.hpp"
 #include "vtu_errors.hpp"
 
 namespace volmesh {
@@ -76,11 +81,44 @@ class VtuCells {
     return region;
   }
 
+  static std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+  }
+
+  // The file's cells in mesh order: by "cell_id" when the file has it (vtu_cell_order.hpp),
+  // else as they come.
+  std::vector<Index> mesh_order(Index num_cells) const {
+    std::vector<Index> order(num_cells);
+    vtkDataArray* array = grid_.GetCellData()->GetArray(std::string(kCellIdArray).c_str());
+    if (array == nullptr) {
+      std::iota(order.begin(), order.end(), Index{0});
+      return order;
+    }
+    const std::string entity = "cell data '" + std::string(kCellIdArray) + "'";
+    if (array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != num_cells)
+      fail(entity + ": expected one value per cell");
+    std::fill(order.begin(), order.end(), kNoIndex);
+    for (Index c = 0; c < num_cells; ++c) {
+      const double id = array->GetTuple1(c);
+      if (!(id >= 0.0 && id < num_cells) || id != std::floor(id))
+        fail(entity + ": cell " + std::to_string(c) + " has id " + number(id) +
+             " (ids are 0 .. " + std::to_string(num_cells - 1) + ")");
+      Index& slot = order[static_cast<Index>(id)];
+      if (slot != kNoIndex)
+        fail(entity + ": cells " + std::to_string(slot) + " and " + std::to_string(c) +
+             " have the same id " + std::to_string(static_cast<Index>(id)));
+      slot = c;
+    }
+    return order;
+  }
+
   void read_cells() {
     const Index num_cells = checked_count(grid_.GetNumberOfCells(), "cells");
     const std::vector<Index> region = regions(num_cells);
     std::vector<Index> corners;
-    for (Index c = 0; c < num_cells; ++c) {
+    for (Index c : mesh_order(num_cells)) {
       const int type = grid_.GetCellType(c);
       if (type == VTK_POLYHEDRON) {
         read_polyhedron(c, region[c]);

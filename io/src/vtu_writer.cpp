@@ -1,5 +1,6 @@
 // VTU output through VTK's XML writer: tets and hexes as VTK_TETRA / VTK_HEXAHEDRON, or all
-// cells as VTK_POLYHEDRON with outward faces; boundary tags in field data.
+// cells as VTK_POLYHEDRON with outward faces (cell order: vtu_cell_order.hpp); boundary tags
+// in field data.
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +26,7 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "vtu_boundary_tags.hpp"
+#include "vtu_cell_order.hpp"
 #include "vtu_errors.hpp"
 
 namespace volmesh {
@@ -64,10 +67,25 @@ void insert_element(vtkUnstructuredGrid& grid, int type, const std::array<Index,
   grid.InsertNextCell(type, static_cast<vtkIdType>(N), ids.data());
 }
 
-// Tets and hexes as VTK_TETRA / VTK_HEXAHEDRON unless the mesh has a polyhedron: then every
-// cell is a VTK_POLYHEDRON, because meshio (5.x) cannot read grids mixing polyhedra with
-// other cell types.
-void insert_cells(vtkUnstructuredGrid& grid, const PolyMesh& mesh) {
+// Number of distinct vertices of each cell.
+std::vector<Index> vertex_counts(const PolyMesh& mesh, const CellFaces& cell_faces) {
+  std::vector<Index> counts(mesh.num_cells()), vertices;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    vertices.clear();
+    for (Index f : cell_faces.of(c))
+      vertices.insert(vertices.end(), mesh.face(f).begin(), mesh.face(f).end());
+    std::sort(vertices.begin(), vertices.end());
+    counts[c] =
+        static_cast<Index>(std::unique(vertices.begin(), vertices.end()) - vertices.begin());
+  }
+  return counts;
+}
+
+// Tets and hexes as VTK_TETRA / VTK_HEXAHEDRON in mesh order unless the mesh has a
+// polyhedron: then every cell is a VTK_POLYHEDRON, because meshio cannot read grids mixing
+// polyhedra with other cell types, in the order of vtu_cell_order.hpp. Returns the mesh cell
+// of each written cell when they are polyhedra, else nothing.
+std::vector<Index> insert_cells(vtkUnstructuredGrid& grid, const PolyMesh& mesh) {
   const CellFaces cell_faces = build_cell_faces(mesh);
   std::vector<CellCorners> cells(mesh.num_cells());
   bool polyhedral = false;
@@ -76,22 +94,47 @@ void insert_cells(vtkUnstructuredGrid& grid, const PolyMesh& mesh) {
     polyhedral = polyhedral || cells[c].shape == CellShape::Polyhedron;
   }
   grid.AllocateExact(mesh.num_cells(), static_cast<vtkIdType>(cell_faces.faces.size()) * 2);
-  std::vector<vtkIdType> vertices, stream;
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (polyhedral)
+  std::vector<Index> order;
+  if (polyhedral) {
+    const std::vector<Index> counts = vertex_counts(mesh, cell_faces);
+    order.resize(mesh.num_cells());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Index a, Index b) { return counts[a] < counts[b]; });
+    std::vector<vtkIdType> vertices, stream;
+    for (Index c : order)
       insert_polyhedron(grid, canonical_faces(mesh, cell_faces.of(c), c), vertices, stream);
-    else if (cells[c].shape == CellShape::Tetrahedron)
+    return order;
+  }
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (cells[c].shape == CellShape::Tetrahedron)
       insert_element(grid, VTK_TETRA, canonical_tet(cells[c].corners));
     else
       insert_element(grid, VTK_HEXAHEDRON, canonical_hex(cells[c].corners));
   }
+  return order;
 }
 
-vtkNew<vtkIntArray> int_array(const std::string& name, const std::vector<Index>& values) {
+// Copies per-cell values, `components` each, to `out` in the written order: order[k] is the
+// mesh cell written k-th (empty: mesh order). Other values (per point) with an empty order.
+template <class T, class U>
+void copy_in_order(const std::vector<T>& values, const std::vector<Index>& order, int components,
+                   U* out) {
+  if (order.empty()) {
+    std::copy(values.begin(), values.end(), out);
+    return;
+  }
+  for (Index c : order)
+    out = std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(c) * components, components,
+                      out);
+}
+
+vtkNew<vtkIntArray> int_array(const std::string& name, const std::vector<Index>& values,
+                              const std::vector<Index>& order = {}) {
   vtkNew<vtkIntArray> array;
   array->SetName(name.c_str());
   array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  copy_in_order(values, order, 1, array->GetPointer(0));
   return array;
 }
 
@@ -110,7 +153,8 @@ void check_field(const std::string& source, const std::string& where, const std:
 }
 
 void add_fields(vtkDataSetAttributes& data, const std::vector<Field>& fields, Index entities,
-                const std::string& where, const std::string& source) {
+                const std::vector<Index>& order, const std::string& where,
+                const std::string& source) {
   for (const Field& field : fields) {
     if (field.components < 1)
       throw InputError(source + ": " + where + " field '" + field.name + "': " +
@@ -121,21 +165,27 @@ void add_fields(vtkDataSetAttributes& data, const std::vector<Field>& fields, In
     array->SetName(field.name.c_str());
     array->SetNumberOfComponents(field.components);
     array->SetNumberOfTuples(entities);
-    std::copy(field.values.begin(), field.values.end(), array->GetPointer(0));
+    copy_in_order(field.values, order, field.components, array->GetPointer(0));
     data.AddArray(array);
   }
 }
 
+// Cell arrays follow the written cell order; "cell_id" (vtu_cell_order.hpp) is added when
+// that is not the mesh's. Point arrays keep the point order.
 void add_cell_data(vtkUnstructuredGrid& grid, const PolyMesh& mesh, const MeshFields& fields,
-                   const std::string& source) {
+                   const std::vector<Index>& order, const std::string& source) {
   vtkCellData& data = *grid.GetCellData();
-  data.AddArray(int_array("region", mesh.cell_region));
+  data.AddArray(int_array("region", mesh.cell_region, order));
   for (const IntField& field : fields.cell_ints) {
     check_field(source, "cell", field.name, field.values.size(), mesh.cell_region.size());
-    data.AddArray(int_array(field.name, field.values));
+    if (field.name == kCellIdArray)
+      throw InputError(source + ": cell field '" + field.name +
+                       "': the name is reserved for the cells' order in the mesh");
+    data.AddArray(int_array(field.name, field.values, order));
   }
-  add_fields(data, fields.cell, mesh.num_cells(), "cell", source);
-  add_fields(*grid.GetPointData(), fields.point, mesh.num_points(), "point", source);
+  if (!order.empty()) data.AddArray(int_array(std::string(kCellIdArray), order));
+  add_fields(data, fields.cell, mesh.num_cells(), order, "cell", source);
+  add_fields(*grid.GetPointData(), fields.point, mesh.num_points(), {}, "point", source);
 }
 
 // One field-data array per boundary tag, in tag order, so that tags round-trip; faces
@@ -165,8 +215,8 @@ void write_vtu(const PolyMesh& mesh, const fs::path& path, const MeshFields& fie
   const std::string source = path.string();
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(make_points(mesh));
-  insert_cells(*grid, mesh);
-  add_cell_data(*grid, mesh, fields, source);
+  const std::vector<Index> order = insert_cells(*grid, mesh);
+  add_cell_data(*grid, mesh, fields, order, source);
   add_boundary_tags(*grid, mesh, path);
 
   AtomicOutput output(path);
@@ -174,11 +224,13 @@ void write_vtu(const PolyMesh& mesh, const fs::path& path, const MeshFields& fie
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(output.temporary().c_str());
   writer->SetInputData(grid);
-  // Raw appended binary, zlib-compressed, 64-bit headers and ids: compact, exact and
-  // readable by ParaView and meshio. zlib's fastest level: VTK's default (5) spent a fifth
-  // of a whole cut-cell run compressing, for files only about 10% smaller.
+  // Appended binary, zlib-compressed, 64-bit headers and ids: exact and readable by ParaView
+  // and meshio. Base64-encoded: meshio (7.0) re-encodes raw appended data and then looks
+  // arrays up by offsets that can collide with the ones it has already rewritten, reading
+  // one array's bytes as another's. zlib's fastest level: VTK's default (5) spent a fifth of
+  // a whole cut-cell run compressing, for files only about 10% smaller.
   writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
+  writer->EncodeAppendedDataOn();
   writer->SetCompressorTypeToZLib();
   writer->SetCompressionLevel(1);
   writer->SetHeaderTypeToUInt64();

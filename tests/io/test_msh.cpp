@@ -139,7 +139,8 @@ TEST(Msh, PolyhedraAreRefused) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), path.string() +
                                          ": cell 8 is a polyhedron with 9 faces; MSH 4.1 output "
-                                         "takes tetrahedra and hexahedra only");
+                                         "takes tetrahedra and hexahedra only (convert with "
+                                         "--decompose tets)");
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / ""));
 }

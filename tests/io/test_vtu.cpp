@@ -8,6 +8,7 @@
 #include <sanitizer/lsan_interface.h>
 #endif
 
+#include "../support/unit_cube_meshes.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -74,6 +75,46 @@ TEST(Vtu, MeshioReadsTetsHexesAndPolyhedra) {
   expect_meshio_counts({{"points", 31}, {"polyhedron8", 8}, {"polyhedron13", 1}}, seen[2]);
 }
 
+// A polyhedral file lists its cells by vertex count, with "cell_id" back to the mesh's order:
+// the big cube (13 vertices, cell 0) comes after the four small ones (8 each). meshio 7.0
+// pairs every cell with its own region and data; our reader restores the mesh's order.
+TEST(Vtu, PolyhedraComeByVertexCountWithTheirData) {
+  TempDir dir;
+  const PolyMesh mesh = big_cube_next_to_four_small(true);
+  MeshFields fields;
+  fields.cell_ints.push_back({"region_plus_4", {5, 6, 6, 6, 6}});
+  fields.cell.push_back({"twice_region", 2, {2, 2, 4, 4, 4, 4, 4, 4, 4, 4}});
+  fields.point.push_back({"x", 1, {}});
+  for (const Vec3& p : mesh.points) fields.point.back().values.push_back(p.x());
+  expect_round_trip(mesh, dir, fields);
+  const PolyMesh back = read_vtu(dir / "a.vtu");
+  EXPECT_EQ(back.cell_region, mesh.cell_region);
+
+  const nlohmann::json expected = {{"1", 1.0}, {"2", 0.5}};
+  const auto seen = meshio_region_volumes({dir / "a.vtu"});
+  EXPECT_EQ(seen[0].value("cells", nlohmann::json()),
+            nlohmann::json({{"polyhedron8", 4}, {"polyhedron13", 1}}));
+  EXPECT_EQ(seen[0].value("regions", nlohmann::json()), expected);
+  // The other cell arrays follow their cells: volumes by their values.
+  const auto by = [&](const std::string& array) {
+    return meshio_region_volumes({dir / "a.vtu"}, array)[0].value("regions", nlohmann::json());
+  };
+  EXPECT_EQ(by("region_plus_4"), nlohmann::json({{"5", 1.0}, {"6", 0.5}}));
+  EXPECT_EQ(by("twice_region"), nlohmann::json({{"2", 1.0}, {"4", 0.5}}));
+  EXPECT_EQ(by("cell_id"),
+            nlohmann::json({{"0", 1.0}, {"1", 0.125}, {"2", 0.125}, {"3", 0.125}, {"4", 0.125}}));
+}
+
+// "cell_id" orders the cells; a user field of that name would be mistaken for it.
+TEST(Vtu, CellIdIsReservedAndChecked) {
+  TempDir dir;
+  const PolyMesh mesh = big_cube_next_to_four_small(true);
+  MeshFields fields;
+  fields.cell_ints.push_back({"cell_id", {0, 1, 2, 3, 4}});
+  EXPECT_THROW(write_vtu(mesh, dir / "a.vtu", fields), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.vtu"));
+}
+
 TEST(Vtu, ReadsMeshioWedgesAndPyramids) {
   TempDir dir;
   run_meshio_script("meshio_write.py", "'" + (dir / "m.vtu").string() + "'");
@@ -85,6 +126,27 @@ TEST(Vtu, ReadsMeshioWedgesAndPyramids) {
   const ValidityReport report = check_validity(mesh);
   EXPECT_TRUE(report.valid()) << (report.problems.empty() ? "" : report.problems.front());
   EXPECT_NEAR(report.total_volume, 1.0 + 1.0 / 6 + 0.25, 1e-12);
+}
+
+// "cell_id" puts the cells in its order; ids that are not each cell's own index are refused.
+TEST(Vtu, CellIdsOrderTheCellsOrAreRefused) {
+  TempDir dir;
+  const auto path = (dir / "m.vtu").string();
+  run_meshio_script("meshio_write.py", "'" + path + "' 2,0,1");
+  const CellFaces cells = build_cell_faces(read_vtu(path));
+  EXPECT_EQ(std::vector<std::size_t>({cells.of(0).size(), cells.of(1).size(), cells.of(2).size()}),
+            std::vector<std::size_t>({5, 5, 6}));  // pyramid, wedge, hexahedron
+  for (const auto& [ids, what] : std::vector<std::pair<std::string, std::string>>{
+           {"0,2,0", ": cell data 'cell_id': cells 0 and 2 have the same id 0"},
+           {"0,1,3", ": cell data 'cell_id': cell 2 has id 3 (ids are 0 .. 2)"}}) {
+    run_meshio_script("meshio_write.py", "'" + path + "' " + ids);
+    try {
+      read_vtu(path);
+      ADD_FAILURE() << ids << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + what);
+    }
+  }
 }
 
 // VTK does not escape array names; the writer encodes the tag names it puts there.
@@ -118,7 +180,7 @@ TEST(Vtu, BadFilesGiveOneLineErrors) {
   const std::string bytes = file_bytes(dir / "good.vtu");
   std::ofstream(dir / "truncated.vtu", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   std::string corrupt = bytes;  // zlib data of the first array
-  corrupt[corrupt.find("<AppendedData encoding=\"raw\">\n   _") + 70] ^= 0x5A;
+  corrupt[corrupt.find("<AppendedData encoding=\"base64\">\n   _") + 70] ^= 0x5A;
   std::ofstream(dir / "corrupt.vtu", std::ios::binary) << corrupt;
   std::ofstream(dir / "garbage.vtu") << "not xml at all\n";
   for (const char* name : {"truncated.vtu", "corrupt.vtu", "garbage.vtu", "missing.vtu"}) {

@@ -154,15 +154,25 @@ std::string run_meshio_script(const std::string& script, const std::string& args
   return output;
 }
 
-std::vector<nlohmann::json> meshio_read(const std::vector<fs::path>& files) {
-  std::string args;
+namespace {
+
+// One JSON object per file from a script that prints one line each.
+std::vector<nlohmann::json> script_objects(const std::string& script, std::string args,
+                                           const std::vector<fs::path>& files) {
   for (const auto& file : files) args += " '" + file.string() + "'";
-  std::istringstream lines(run_meshio_script("meshio_read.py", args));
-  std::vector<nlohmann::json> seen;
-  for (std::string line; std::getline(lines, line);)
-    if (line.starts_with("{")) seen.push_back(nlohmann::json::parse(line));  // meshio prints too
-  seen.resize(files.size(), nlohmann::json::object());
-  return seen;
+  return json_lines(run_meshio_script(script, args), files.size());
+}
+
+}  // namespace
+
+std::vector<nlohmann::json> meshio_read(const std::vector<fs::path>& files) {
+  return script_objects("meshio_read.py", "", files);
+}
+
+std::vector<nlohmann::json> meshio_region_volumes(const std::vector<fs::path>& files,
+                                                  const std::string& region_array) {
+  return script_objects("meshio_region_volumes.py",
+                        region_array.empty() ? "" : "--region-array '" + region_array + "'", files);
 }
 
 void expect_meshio_counts(std::map<std::string, long> expected, const nlohmann::json& seen) {

@@ -40,6 +40,12 @@ std::string run_meshio_script(const std::string& script, const std::string& args
 // Empty objects, with a test failure, when meshio is missing or fails.
 std::vector<nlohmann::json> meshio_read(const std::vector<std::filesystem::path>& files);
 
+// What meshio finds in the 3D cells of each file (tests/io/external/meshio_region_volumes.py):
+// {"cells": {type: count}, "volume": V, "regions": {"r": V_r}, "min_tet": v}; regions read
+// from `region_array` when given. Empty objects, with a test failure, when meshio fails.
+std::vector<nlohmann::json> meshio_region_volumes(const std::vector<std::filesystem::path>& files,
+                                                  const std::string& region_array = "");
+
 // Checks meshio's point and cell counts against `expected` (as from cell_type_counts).
 void expect_meshio_counts(std::map<std::string, long> expected, const nlohmann::json& seen);
 

@@ -137,9 +137,8 @@ TEST(Pvtu, MeshioFindsTheSameCellsAsInTheWholeMesh) {
 }
 
 // A piece holding a polyhedron is written with polyhedra only (as write_vtu does), the
-// others with hexahedra. meshio 5 reads the cell data of polyhedral pieces onto the right
-// cells only because a piece orders its cells by vertex count (part_mesh.hpp); it cannot read
-// the whole mesh, whose big cube (13 vertices) comes first.
+// others with hexahedra. Piece 0 holds the big cube (13 vertices) before a small one (8):
+// meshio puts each cell's data on it because write_vtu writes polyhedra by vertex count.
 TEST(Pvtu, MeshioReadsPolyhedralPieces) {
   TempDir dir;
   write_pvtu(pieces_of(big_cube_next_to_four_small(true), {0, 1, 1, 0, 1}, 2), dir / "cubes.pvtu");

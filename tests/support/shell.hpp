@@ -3,7 +3,10 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace volmesh::test {
 
@@ -18,6 +21,17 @@ inline int run(const std::string& command, std::string* output, bool merge_stder
     output->append(buffer, n);
   const int status = ::pclose(pipe);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The JSON objects in a tool's output, one per line (other lines, such as warnings, are
+// skipped), padded with empty objects to `count`.
+inline std::vector<nlohmann::json> json_lines(const std::string& output, std::size_t count) {
+  std::vector<nlohmann::json> objects;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);)
+    if (line.starts_with("{")) objects.push_back(nlohmann::json::parse(line));
+  objects.resize(count, nlohmann::json::object());
+  return objects;
 }
 
 }  // namespace volmesh::test

@@ -12,21 +12,6 @@ std::string part_boundary_name(Index part, Index other) {
 
 namespace {
 
-// Distinct vertices of each cell.
-std::vector<Index> vertex_counts(const PolyMesh& mesh) {
-  const CellFaces cell_faces = build_cell_faces(mesh);
-  std::vector<Index> counts(mesh.num_cells()), vertices;
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    vertices.clear();
-    for (Index f : cell_faces.of(c))
-      vertices.insert(vertices.end(), mesh.face(f).begin(), mesh.face(f).end());
-    std::sort(vertices.begin(), vertices.end());
-    counts[c] =
-        static_cast<Index>(std::unique(vertices.begin(), vertices.end()) - vertices.begin());
-  }
-  return counts;
-}
-
 // Faces of part p in face order: its cells' faces, once each.
 std::vector<std::vector<Index>> faces_by_part(const PolyMesh& mesh,
                                               std::span<const Index> cell_part, Index parts) {
@@ -96,11 +81,8 @@ std::vector<PartMesh> split_mesh(const PolyMesh& mesh, std::span<const Index> ce
                                  Index parts) {
   std::vector<PartMesh> result(parts);
   for (Index c = 0; c < mesh.num_cells(); ++c) result[cell_part[c]].global_cells.push_back(c);
-  const std::vector<Index> counts = vertex_counts(mesh);
   std::vector<Index> local_cell(mesh.num_cells());
   for (PartMesh& part : result) {
-    std::stable_sort(part.global_cells.begin(), part.global_cells.end(),
-                     [&](Index a, Index b) { return counts[a] < counts[b]; });
     for (std::size_t i = 0; i < part.global_cells.size(); ++i) {
       local_cell[part.global_cells[i]] = static_cast<Index>(i);
       part.mesh.cell_region.push_back(mesh.cell_region[part.global_cells[i]]);

@@ -27,7 +27,8 @@ struct MeshFields {
 
 // Writes by extension: .vtu, .msh (Gmsh 4.1), .mesh (MEDIT), .inp (Abaqus), or a directory
 // ending in .foam (OpenFOAM case with constant/polyMesh). Element formats (msh, mesh, inp)
-// take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell.
+// take tetrahedra and hexahedra and throw InputError naming the first polyhedral cell
+// (decompose_into_tets, geometry/tet_decomposition.hpp, makes any mesh tetrahedra).
 void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
                 const MeshFields& fields = {});
 // Throws the InputError write_mesh would for a path of no known output format: checked

@@ -1,7 +1,7 @@
 #pragma once
 // The closest surface point of one analytic primitive (analytic.hpp), exact up to rounding:
 // closed forms, and Eberly's robust bisection for ellipsoids. Boundary data on the TRUE
-// boundary (fem) and the geometric-error yardstick (tests/geometry) both stand on it.
+// boundary (fem) and the surface distance to analytic domains (mesh/quality) both stand on it.
 #include "volmesh/domain/analytic.hpp"
 
 namespace volmesh {

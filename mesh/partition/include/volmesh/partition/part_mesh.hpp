@@ -8,12 +8,10 @@
 
 namespace volmesh {
 
-// Local points keep the global order; local cells come in order of their number of distinct
-// vertices, then of their global index, because meshio 5 (Debian 12) puts the cell data of a
-// polyhedral VTU file on the wrong cells, or refuses the file, unless the cells come in that
-// order. global_cells / global_points map local cells and points back. Faces shared with another
-// part q become boundary faces, oriented outward from this part, tagged "procBoundary<p>to<q>" as
-// OpenFOAM's decomposePar names them; boundary tags that no face of the part uses are dropped.
+// Local cells and points keep the global order; global_cells / global_points map them back.
+// Faces shared with another part q become boundary faces, oriented outward from this part,
+// tagged "procBoundary<p>to<q>" as OpenFOAM's decomposePar names them; boundary tags that no
+// face of the part uses are dropped.
 struct PartMesh {
   PolyMesh mesh;
   std::vector<Index> global_cells;

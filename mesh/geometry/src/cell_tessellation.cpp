@@ -1,18 +1,26 @@
-#include "volmesh/fem/polyhedral.hpp"
+#include "volmesh/geometry/cell_tessellation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "volmesh/core/geometry.hpp"
-#include "volmesh/core/tri_surface.hpp"
 #include "volmesh/geometry/polygon_split.hpp"
 
-namespace volmesh::fem {
+namespace volmesh {
 namespace {
 
 // Sub-tetrahedron volume relative to the cube of its longest edge at or below which it counts
 // as degenerate (a regular tet has 0.118).
 constexpr double kDegenerateShape = 1e-12;
+
+// The kernel search: projections over-relaxed by this factor (in (1, 2): finite termination);
+// a margin that starts at this fraction of the cell's volume-to-area length and shrinks by
+// kMarginShrink for each of kMarginAttempts tries, each of at most kMaxSweeps sweeps.
+constexpr double kOverRelaxation = 1.5;
+constexpr double kInitialMargin = 0.1;
+constexpr double kMarginShrink = 0.25;
+constexpr int kMarginAttempts = 6;
+constexpr int kMaxSweeps = 500;
 
 double shape_measure(const SubTetrahedron& t) {
   double longest = 0.0;
@@ -42,7 +50,8 @@ FaceSplits split_faces(const PolyMesh& mesh) {
     if (const PolygonSplit split = split_polygon(mesh.points, mesh.face(f)); split.folded)
       splits.folded[f] = 1;
     else
-      splits.triangles.insert(splits.triangles.end(), split.triangles.begin(), split.triangles.end());
+      splits.triangles.insert(splits.triangles.end(), split.triangles.begin(),
+                              split.triangles.end());
     splits.offsets[f + 1] = static_cast<Index>(splits.triangles.size());
   }
   return splits;
@@ -80,16 +89,15 @@ std::optional<Vec3> star_centre(const PolyMesh& mesh, const FaceSplits& splits,
   if (sees_every_face(mesh, splits, faces, c, x)) return x;
 
   // Cyclic over-relaxed projections onto the planes shifted inward by a margin, which end
-  // after finitely many steps when the shifted kernel is not empty; the margin starts at a
-  // tenth of the cell's volume-to-area length and shrinks.
-  double margin = 0.1 * volume / area;
-  for (int attempt = 0; attempt < 6; ++attempt, margin *= 0.25) {
-    for (int sweep = 0; sweep < 500; ++sweep) {
+  // after finitely many steps when the shifted kernel is not empty.
+  double margin = kInitialMargin * volume / area;
+  for (int attempt = 0; attempt < kMarginAttempts; ++attempt, margin *= kMarginShrink) {
+    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
       bool moved = false;
       for (const auto& [n, b] : planes) {
         const double excess = n.dot(x) - (b - margin);
         if (excess > 0.0) {
-          x -= 1.5 * excess * n;
+          x -= kOverRelaxation * excess * n;
           moved = true;
         }
       }
@@ -100,4 +108,4 @@ std::optional<Vec3> star_centre(const PolyMesh& mesh, const FaceSplits& splits,
   return std::nullopt;
 }
 
-}  // namespace volmesh::fem
+}  // namespace volmesh
