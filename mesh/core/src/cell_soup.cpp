@@ -48,10 +48,6 @@ void add_local_faces(CellSoup& soup, std::span<const Index> corners, const Faces
   }
 }
 
-}  // namespace
-
-namespace {
-
 void append_loop(std::vector<Index>& offsets, std::vector<Index>& vertices,
                  std::span<const Index> loop, const std::string& source) {
   if (vertices.size() + loop.size() > static_cast<std::size_t>(kMaxIndex))

@@ -7,6 +7,14 @@
 #include <utility>
 
 namespace volmesh {
+namespace {
+
+// fan_is_proper's rounding floor, relative to an equal triangle's share of the polygon's
+// area (|area|^2 / n): far above the rounding of a flat polygon's fan, far below any triangle
+// that really faces the polygon's way.
+constexpr double kFanFloor = 1e-10;
+
+}  // namespace
 
 double flatness(const std::vector<Vec3>& points, std::span<const Index> loop, double area) {
   double longest = 0.0;
@@ -60,7 +68,7 @@ bool fan_is_proper(const std::vector<Vec3>& points, std::span<const Index> loop)
   };
   Vec3 total = Vec3::Zero();
   for (std::size_t k = 0; k < n; ++k) total += area(k);
-  const double floor = 1e-10 * total.squaredNorm() / static_cast<double>(n);
+  const double floor = kFanFloor * total.squaredNorm() / static_cast<double>(n);
   for (std::size_t k = 0; k < n; ++k)
     if (!(area(k).dot(total) > floor)) return false;
   return true;
@@ -107,7 +115,7 @@ CellGeometry cell_geometry(const PolyMesh& mesh, std::span<const Index> faces, I
   return {volume, centre};
 }
 
-// Both cores; each face and cell on its own, so the result does not depend on the split.
+// In parallel; each face and cell on its own, so the result does not depend on the split.
 MeshGeometry mesh_geometry(const PolyMesh& mesh, const CellFaces& cell_faces) {
   std::vector<FaceGeometry> faces(mesh.num_faces());
   tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) { faces[f] = face_geometry(mesh, f); });

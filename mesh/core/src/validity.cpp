@@ -109,7 +109,7 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
   r.points = m.num_points();
   if (!check_indices(m, r, p)) return r;
 
-  // Each face's vertices sorted, in one array laid out as the faces' (both cores).
+  // Each face's vertices sorted, in one array laid out as the faces' (in parallel).
   std::vector<Index> sorted(m.face_vertices);
   tbb::parallel_for(Index{0}, m.num_faces(), [&](Index f) {
     std::sort(sorted.begin() + m.face_offsets[f], sorted.begin() + m.face_offsets[f + 1]);
@@ -149,7 +149,7 @@ ValidityReport check_validity(const PolyMesh& m, const ValidityOptions& opt) {
 
   r.min_cell_volume = m.num_cells() ? g.cells[0].volume : 0.0;
   r.max_cell_volume = r.min_cell_volume;
-  // Per cell on both cores, reported in order.
+  // Per cell in parallel, reported in order.
   std::vector<double> closedness(m.num_cells());
   std::vector<Index> unmatched(m.num_cells());
   tbb::parallel_for(Index{0}, m.num_cells(), [&](Index c) {

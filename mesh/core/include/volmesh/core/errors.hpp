@@ -1,5 +1,5 @@
 #pragma once
-// Error types that the command line maps to exit codes (DESIGN.md §3).
+// Error types that the command line maps to exit codes (docs/architecture.md).
 #include <stdexcept>
 #include <string>
 

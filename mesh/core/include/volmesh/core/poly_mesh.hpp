@@ -1,5 +1,5 @@
 #pragma once
-// Face-based polyhedral mesh, laid out like OpenFOAM's polyMesh (DESIGN.md §2).
+// Face-based polyhedral mesh, laid out like OpenFOAM's polyMesh (docs/architecture.md).
 #include <span>
 #include <string>
 #include <vector>

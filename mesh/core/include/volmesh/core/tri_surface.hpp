@@ -1,5 +1,5 @@
 #pragma once
-// A triangulated surface: the input of surface domains, the SDF tool and the tet meshers.
+// A triangulated surface: the input of surface domains and of the signed-distance tool.
 #include <array>
 #include <cstdint>
 #include <string>

@@ -1,5 +1,6 @@
 #pragma once
-// The validity checker behind `volmesh check` (DESIGN.md §2 invariants).
+// The validity checker behind `volmesh check`: the invariants every PolyMesh must hold
+// (docs/verification.md, "Validity").
 #include <map>
 #include <string>
 #include <vector>

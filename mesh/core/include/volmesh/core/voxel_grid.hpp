@@ -1,7 +1,7 @@
 #pragma once
-// A scalar field sampled on a regular grid, such as the signed-distance voxels of the hexdc
-// method (DESIGN.md §4): positive inside, negative outside, as in the hex paper. Plain data:
-// io reads and writes it (voxel_grid_io.hpp), the grid domain interpolates it.
+// A scalar field sampled on a regular grid, such as the signed-distance voxels `volmesh sdf`
+// writes: positive inside, negative outside, as in the hex paper. Plain data: io reads and
+// writes it (voxel_grid_io.hpp), the grid domain interpolates it.
 #include <array>
 #include <cstdint>
 #include <vector>
