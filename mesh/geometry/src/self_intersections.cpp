@@ -25,6 +25,10 @@ using Box =
     CGAL::Box_intersection_d::Box_with_info_d<double, 3, Index,
                                               CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
 
+// box_self_intersection_d's cutoff (below it, boxes are compared pairwise): Polygon_mesh_
+// processing's own choice for its self-intersection test, faster than the default 10.
+constexpr std::ptrdiff_t kBoxCutoff = 2000;
+
 Point point(const TriSurface& surface, Index v) {
   const Vec3& p = surface.points[v];
   return {p.x(), p.y(), p.z()};
@@ -108,7 +112,7 @@ std::vector<std::pair<Index, Index>> find_self_intersections(const TriSurface& s
           }
           pairs.emplace_back(std::min(i, j), std::max(i, j));
         },
-        std::ptrdiff_t{2000});  // PMP's cutoff: faster than the default 10
+        kBoxCutoff);
   } catch (const Enough&) {
   }
   std::sort(pairs.begin(), pairs.end());

@@ -16,6 +16,9 @@ namespace volmesh {
 
 namespace {
 
+// The triangles a non-manifold edge's message lists, at most.
+constexpr std::size_t kListedTriangles = 5;
+
 // One side of a triangle. Uses are grouped by edge, in triangle order within an edge, which
 // keeps every result independent of hashing or sorting details.
 struct EdgeUse {
@@ -81,9 +84,9 @@ void check_edges(const std::vector<EdgeUse>& uses, const std::string& source) {
   });
   if (!non_manifold.empty()) {
     std::string triangles;
-    for (const EdgeUse& u : non_manifold.first(std::min<std::size_t>(non_manifold.size(), 5)))
+    for (const EdgeUse& u : non_manifold.first(std::min(non_manifold.size(), kListedTriangles)))
       triangles += (triangles.empty() ? "" : ", ") + std::to_string(u.triangle);
-    if (non_manifold.size() > 5) triangles += ", ...";
+    if (non_manifold.size() > kListedTriangles) triangles += ", ...";
     throw InputError(source + ": " + edge_name(non_manifold[0].key) + ": non-manifold, shared by " +
                      std::to_string(non_manifold.size()) + " triangles (" + triangles +
                      "); a closed surface has exactly two per edge");
