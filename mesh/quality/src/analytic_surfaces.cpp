@@ -14,6 +14,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The fewest Fibonacci points put on a sphere or ellipsoid, whatever the spacing: a spacing
+// near the solid's size still samples it all round.
+constexpr int kMinSpherePoints = 8;
 
 template <class... F>
 struct Overloaded : F... {
@@ -58,7 +61,7 @@ std::vector<double> angles(double r, double spacing, int minimum = 3) {
 
 // Fibonacci points on the unit sphere, about `count` of them evenly spread.
 std::vector<Vec3> fibonacci_sphere(double count) {
-  const int n = std::max(8, static_cast<int>(std::ceil(count)));
+  const int n = std::max(kMinSpherePoints, static_cast<int>(std::ceil(count)));
   const double golden = kPi * (3.0 - std::sqrt(5.0));
   std::vector<Vec3> out(n);
   for (int i = 0; i < n; ++i) {

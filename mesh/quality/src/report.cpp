@@ -9,6 +9,10 @@ namespace volmesh {
 
 namespace {
 
+// checkMesh counts a non-orthogonality error where the cosine is at most its SMALL: an angle
+// of 90° to rounding, so the count starts this far below 90°.
+constexpr double kRightAngleRoundingDeg = 1e-12;
+
 // The face values on the boundary (or off it), in face order.
 std::vector<double> select_faces(const PolyMesh& mesh, const std::vector<double>& values,
                                  bool boundary) {
@@ -55,10 +59,9 @@ QualityReport quality_report(const PolyMesh& mesh, const QualityMeasurements& m)
   r.highly_skewed_faces =
       static_cast<Index>(std::count_if(m.faces.skewness.begin(), m.faces.skewness.end(),
                                        [](double s) { return s > kCheckMeshSkewness; }));
-  // checkMesh counts an error where the cosine is at most SMALL: 90° to rounding.
-  r.non_orthogonality_errors =
-      static_cast<Index>(std::count_if(internal_ortho.begin(), internal_ortho.end(),
-                                       [](double a) { return a >= kCheckMeshNonOrthogonality - 1e-12; }));
+  const double error_from = kCheckMeshNonOrthogonality - kRightAngleRoundingDeg;
+  r.non_orthogonality_errors = static_cast<Index>(std::count_if(
+      internal_ortho.begin(), internal_ortho.end(), [&](double a) { return a >= error_from; }));
   r.inverted_face_pyramids = std::accumulate(m.faces.inverted_pyramids.begin(), m.faces.inverted_pyramids.end(), Index{0});
 
   const auto [vmin, vmax] = std::minmax_element(q.volume.begin(), q.volume.end());

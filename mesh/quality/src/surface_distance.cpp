@@ -37,7 +37,7 @@ void join(Slots& left, const Slots& right) {
   for (std::size_t k = 0; k < left.size(); ++k) join(left[k], right[k]);
 }
 
-// Slots joined over items [0, n), each item's points added by visit(i, slots); both cores.
+// Slots joined over items [0, n), each item's points added by visit(i, slots), in parallel.
 Slots parallel_worst(std::size_t n, std::size_t slots,
                      const std::function<void(std::size_t, Slots&)>& visit) {
   return tbb::parallel_reduce(

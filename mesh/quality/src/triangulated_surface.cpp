@@ -30,6 +30,17 @@ using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// The coplanar cover bound (Target::covered_plane_bound): a piece is bounded by its distance
+// to a plane only when it lies within 60° of the plane (the cosine of their normals at least
+// kCoverMinCosine), where its projection keeps at least half its area; the plane's triangles
+// cover the projection when their clipped areas add up to it within kCoverAreaTolerance (the
+// rounding of the clipping). Target triangles within kCoplanarFraction of the error bound of
+// one plane count as coplanar: a piece over them is then settled within half the bound of
+// its corners, also where two surfaces lie on each other only up to rounding.
+constexpr double kCoverMinCosine = 0.5;
+constexpr double kCoverAreaTolerance = 1e-11;
+constexpr double kCoplanarFraction = 0.25;
+
 struct Closest {
   double distance = 0.0;
   std::size_t triangle = 0;
@@ -128,7 +139,7 @@ class Target {
                              double tolerance) const {
     const Vector piece_normal = CGAL::cross_product(piece[1] - piece[0], piece[2] - piece[0]);
     const double piece_norm = std::sqrt(piece_normal.squared_length());
-    if (!(std::abs(piece_normal * plane.normal) >= 0.5 * piece_norm)) return kInfinity;
+    if (!(std::abs(piece_normal * plane.normal) >= kCoverMinCosine * piece_norm)) return kInfinity;
     Polygon2 projected{plane.in_plane(piece[0]), plane.in_plane(piece[1]), plane.in_plane(piece[2])};
     if (area2(projected) < 0.0) std::swap(projected[1], projected[2]);
     const double projected_area = area2(projected);
@@ -150,7 +161,7 @@ class Target {
     }
     // A closed surface's triangles do not overlap, so the areas add up to the projection's
     // exactly where they cover it; more than that means overlapping triangles: no verdict.
-    if (std::abs(covered - projected_area) > 1e-11 * projected_area) return kInfinity;
+    if (std::abs(covered - projected_area) > kCoverAreaTolerance * projected_area) return kInfinity;
     return std::max({plane.height(piece[0]), plane.height(piece[1]), plane.height(piece[2])}) + tolerance;
   }
 
@@ -234,10 +245,8 @@ FarthestPoint one_sided(const TriSurface& from, const Target& to, double error_b
         at_point[i] = measure(Target::point(from.points[i]));
       }
   const double& lower = found.distance;
-  // Triangles within a quarter of the bound of one plane count as coplanar: a piece over them
-  // is then settled within half the bound of its corners, also where the surfaces lie on each
-  // other only up to rounding.
-  const double tolerance = 0.25 * error_bound;
+  // Coplanar within kCoplanarFraction of the bound.
+  const double tolerance = kCoplanarFraction * error_bound;
   std::priority_queue<Piece> queue;
   const auto consider = [&](Piece&& p) {
     p.upper = corner_bound(to, p);

@@ -38,22 +38,27 @@ std::vector<std::uint8_t> face_inverted_pyramids(const PolyMesh& mesh, const Cel
 // Skewness exactly as primitiveMeshTools::faceSkewness (internal faces) and
 // boundaryFaceSkewness (boundary faces, mirrored owner centre) define it: the distance
 // between the face centre and the point where the centre-to-centre line crosses the face
-// plane, divided by max(0.2·|d|, the face's extent from its centre along that offset);
-// on boundary faces d is the owner's normal distance to the face and the factor 0.4.
-// checkMesh flags faces above kCheckMeshSkewness.
+// plane, divided by max(kInternalSkewnessFactor·|d|, the face's extent from its centre along
+// that offset); on boundary faces d is the owner's normal distance to the face and the
+// factor kBoundarySkewnessFactor. checkMesh flags faces above kCheckMeshSkewness.
 std::vector<double> face_skewness(const PolyMesh& mesh, const MeshGeometry& geometry);
-
-// One face at a time, for meshers that weigh alternatives before the mesh exists: the face's
-// centre and area vector, its vertices points[loop[k]], the cells' centres (no neighbour: a
-// boundary face).
 
 // OpenFOAM's ROOTVSMALL, kept in the formulas so that values match checkMesh's, including
 // its answers for zero-area faces and coincident centres.
 inline constexpr double kRootVSmall = 1e-150;
 
-// primitiveMeshTools::faceSkewness with d the owner → neighbour centre vector (factor 0.2),
-// or boundaryFaceSkewness with d the owner's normal distance to the face (factor 0.4: half
-// that to a mirror cell).
+// The least extent of a face in the skewness, as a fraction of the centre distance |d|:
+// OpenFOAM's 0.2 for internal faces, and 0.4 for boundary faces, whose d is half that to the
+// mirror cell.
+inline constexpr double kInternalSkewnessFactor = 0.2;
+inline constexpr double kBoundarySkewnessFactor = 0.4;
+
+// One face at a time, for meshers that weigh alternatives before the mesh exists: the face's
+// centre and area vector, its vertices points[loop[k]], the cells' centres (no neighbour: a
+// boundary face).
+
+// primitiveMeshTools::faceSkewness with d the owner → neighbour centre vector, or
+// boundaryFaceSkewness with d the owner's normal distance to the face.
 // skewness_offset is its first part: the face centre's offset from where d crosses the
 // face's plane, and the least extent the offset's length is divided by (factor * |d|).
 struct SkewnessOffset {
@@ -67,11 +72,11 @@ inline SkewnessOffset skewness_offset(const FaceGeometry& face, const Vec3& owne
   double factor;
   if (neighbour) {
     d = *neighbour - owner;
-    factor = 0.2;
+    factor = kInternalSkewnessFactor;
   } else {
     const Vec3 normal = s / (s.norm() + kRootVSmall);
     d = normal * normal.dot(cpf);
-    factor = 0.4;
+    factor = kBoundarySkewnessFactor;
   }
   return {cpf - (s.dot(cpf) / (s.dot(d) + kRootVSmall)) * d, factor * d.norm() + kRootVSmall};
 }
@@ -121,25 +126,38 @@ double checkmesh_badness(const FaceGeometry& face, const Points& points, const L
   return std::max(angle, face_skewness(face, points, loop, owner, neighbour) / limits.skewness);
 }
 
+// What surely_within_checkmesh_limits takes as surely within the limits: each centre in
+// front of the face by more than kSureFront of the two vectors' lengths (a centre on the
+// face's plane to rounding is left to checkmesh_badness); a non-orthogonality below
+// kSureNonOrthogonalityDeg, tested without an arctangent as sine <= kSureTangent · cosine
+// (tan 80° = 5.671: the test errs to the safe side), which settles only limits above that
+// angle; a skewness below kSureSkewnessFraction of its limit even over the least extent (the
+// face's own extent can only be larger), the last 1% a margin for rounding.
+inline constexpr double kSureFront = 1e-12;
+inline constexpr double kSureNonOrthogonalityDeg = 80.0;
+inline constexpr double kSureTangent = 5.67;
+inline constexpr double kSureSkewnessFraction = 0.99;
+
 // Whether checkmesh_badness is surely at most 1, without the face's vertices or an
-// arctangent: both centres in front of the face, non-orthogonality below 80° (tangent under
-// 5.67), skewness under 0.99 of its limit even over the least extent. Most faces of a mesh
-// pass; false leaves the verdict to checkmesh_badness.
+// arctangent (the constants above). Most faces of a mesh pass; false leaves the verdict to
+// checkmesh_badness.
 inline bool surely_within_checkmesh_limits(const FaceGeometry& face, const Vec3& owner, const Vec3* neighbour,
                                            const CheckMeshLimits& limits) {
   const Vec3& s = face.area_vector;
   const Vec3 cpf = face.centre - owner;
   const double size = s.norm();
-  if (!(s.dot(cpf) > 1e-12 * size * cpf.norm())) return false;
+  if (!(s.dot(cpf) > kSureFront * size * cpf.norm())) return false;
   if (neighbour) {
     const Vec3 cnf = *neighbour - face.centre;
-    if (!(s.dot(cnf) > 1e-12 * size * cnf.norm())) return false;
+    if (!(s.dot(cnf) > kSureFront * size * cnf.norm())) return false;
     const Vec3 d = *neighbour - owner;
     const double cosine = d.dot(s);
-    if (!(limits.non_orthogonality > 80.0 && cosine > 0.0 && d.cross(s).norm() <= 5.67 * cosine)) return false;
+    if (!(limits.non_orthogonality > kSureNonOrthogonalityDeg && cosine > 0.0 &&
+          d.cross(s).norm() <= kSureTangent * cosine))
+      return false;
   }
   const SkewnessOffset o = skewness_offset(face, owner, neighbour);
-  return o.offset.norm() <= 0.99 * limits.skewness * o.min_extent;
+  return o.offset.norm() <= kSureSkewnessFraction * limits.skewness * o.min_extent;
 }
 
 // Larger / smaller |volume| of the two cells across each internal face (>= 1; +inf when a

@@ -12,7 +12,7 @@ namespace volmesh {
 // with right angles, in (0, 1) for a valid distorted hex, <= 0 for an inverted one.
 // Unlike Verdict, which returns DBL_MAX ("perfect") when an edge has zero length, a
 // collapsed edge or principal axis (shorter than 1e-12 of the longest one) gives 0: the hex
-// is degenerate (DESIGN.md §5).
+// is degenerate (docs/verification.md, "Quality measures").
 double hex_scaled_jacobian(const std::array<Vec3, 8>& corners);
 
 }  // namespace volmesh

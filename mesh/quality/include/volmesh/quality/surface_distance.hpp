@@ -1,5 +1,6 @@
 #pragma once
-// How far a mesh's boundary lies from the surface it approximates (DESIGN.md §5): the
+// How far a mesh's boundary lies from the surface it approximates (docs/verification.md,
+// "Geometric convergence"): the
 // two-sided distance between the mesh's boundary faces (and interfaces) and a reference
 // surface, each side a maximum found within a stated tolerance of the true one.
 //
@@ -108,8 +109,8 @@ struct SurfaceDistance {
 
 // The mesh's faces are split into triangles as boundary_surface does (polygons around their
 // vertex average). Throws std::invalid_argument for a tolerance <= 0 or a mesh without the
-// faces to measure. Sampling uses both cores, the subdivision one; the result does not
-// depend on the thread count.
+// faces to measure. Sampling runs in parallel, the subdivision on one thread; the result
+// does not depend on the thread count.
 SurfaceDistance surface_distance(const PolyMesh& mesh, const ReferenceSurface& reference,
                                  const SurfaceDistanceOptions& options);
 
