@@ -18,6 +18,12 @@
 namespace volmesh::cutcell {
 namespace {
 
+// A candidate merging more cells ranks worse by this fraction per cell beyond two, so that
+// of two nearly equal candidates the smaller merge wins.
+constexpr double kExtraCellPenalty = 0.01;
+// Candidate groups scored per task.
+constexpr std::size_t kGroupsPerTask = 8;
+
 class Agglomerator {
  public:
   Agglomerator(PolyMesh& mesh, std::vector<double>& size, const AgglomerationOptions& options)
@@ -188,18 +194,18 @@ void Agglomerator::merge_groups(std::span<const Group> groups) {
 // The best of the candidate merges when it is better than the cells were (a tiny cell: not
 // beyond the limits, or no worse). A second neighbour only where one does not do.
 bool Agglomerator::merge_best(const std::vector<std::vector<Group>>& candidates, bool tiny) {
-  // A cell has about a hundred candidate groups: they are scored on both cores. The first
+  // A cell has about a hundred candidate groups: they are scored in parallel. The first
   // one's rank bounds the winner's: the others stop scoring once they cannot beat it.
   if (candidates.empty()) return false;
   const auto weight = [](const std::vector<Group>& groups) {
     std::size_t cells = 0;
     for (const Group& g : groups) cells += cells_of(g).size();
-    return 1.0 + 0.01 * static_cast<double>(cells - 2);
+    return 1.0 + kExtraCellPenalty * static_cast<double>(cells - 2);
   };
   std::vector<double> worst(candidates.size());
   worst[0] = merged_worst(candidates[0], std::numeric_limits<double>::infinity());
   const double bound = worst[0] * weight(candidates[0]);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(1, candidates.size(), 8), [&](const auto& range) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(1, candidates.size(), kGroupsPerTask), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k)
       worst[k] = merged_worst(candidates[k], bound / weight(candidates[k]));
   });

@@ -238,14 +238,14 @@ PolyMesh Assembler::run(AssemblyStats& stats) {
     return new_id[k - kCellKey];
   };
 
-  // Boundary tags: the domain's surface names, computed on both cores.
+  // Boundary tags: the domain's surface names, computed in parallel.
   std::vector<std::vector<std::string>> names(blocks);
   tbb::parallel_for(Index{0}, blocks, [&](Index b) {
     for (const FaceOut& o : faces[b].faces)
       if (o.surface) names[b].push_back(grid_.domain->boundary_name(o.centre));
   });
   mesh.cell_region = std::move(cell_region);
-  // Tags in order of first use, then the faces written on both cores, each block at its place.
+  // Tags in order of first use, then the faces written in parallel, each block at its place.
   std::vector<std::vector<Index>> tags(blocks);
   std::vector<std::size_t> first_face(blocks + 1, 0), first_key(blocks + 1, 0);
   const std::string unnamed = "boundary";

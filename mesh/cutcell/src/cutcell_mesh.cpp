@@ -19,6 +19,10 @@
 namespace volmesh {
 namespace {
 
+// The largest vertex clearance accepted: the clear stretches at an edge's two ends then
+// leave at least half of the edge to its crossings.
+constexpr double kMaxVertexClearance = 0.25;
+
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -34,8 +38,8 @@ std::vector<OctreeLeaf> split_leaves(Octree& tree, std::vector<Index> leaves) {
 void check_options(const CutcellOptions& o) {
   if (o.crossing_levels < 0 || o.face_point_levels < 0)
     throw InputError("cutcell: the extra refinement levels must not be negative");
-  if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= 0.25))
-    throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");
+  if (!(o.vertex_clearance >= 0.0 && o.vertex_clearance <= kMaxVertexClearance))
+    throw InputError("cutcell: the vertex clearance must lie in [0, 0.25]");  // kMaxVertexClearance
   if (!(o.split_gap > 0.0 && o.split_gap <= 1.0))
     throw InputError("cutcell: the split gap must lie in (0, 1]");
 }

@@ -20,15 +20,42 @@ namespace {
 
 // Two surfaces whose normals' cosine is below this in magnitude meet at a sharp edge.
 constexpr double kRightAngle = 0.5;
-// A feature point within 10 times this fraction of the side outside its face, or less than
-// it inside, is moved to this depth.
+// A feature point within kSideSlackReach times this fraction of the side outside its face,
+// or less than it inside, is moved to this depth.
 constexpr double kSideSlack = 1e-3;
+constexpr double kSideSlackReach = 10.0;
 // A sharp edge's feature point keeps this fraction of the side from the kept polygon's sides,
 // less than the margin (which is for the points of curved surfaces): an edge crossing the
 // face just beside a side whose end is kept (a CAD part's edge along a grid plane) keeps
 // its point, which the cell's feature fan needs, and leaves a thin but proper spike of the
 // kept polygon.
 constexpr double kSideClearance = 1e-2;
+// The least-squares fits here fix at most two directions: those of the face's plane for the
+// tangent lines in it, those across a sharp edge for the planes of its two surfaces.
+constexpr int kFitRank = 2;
+// A projected normal shorter than this (a normal along the face's own) gives no direction in
+// the face.
+constexpr double kMinInPlane = 1e-12;
+// Pushing a point off one side may push it toward a neighbouring side of a face that vertex
+// moves warped; this many passes over the four sides settle it.
+constexpr int kClampPasses = 3;
+// onto_feature's Newton step: each surface is sought on a segment kNewtonReach of the face
+// either way, centred kShiftOfReach of that reach (a tenth of the face) along the surface
+// away from the edge; it needs the two normals at least 30 degrees apart (each one's part
+// across the other at least kMinAcross) and is taken only when it moves the point less than
+// kSmallStep of the face.
+constexpr double kNewtonReach = 0.25;
+constexpr double kShiftOfReach = 0.4;
+constexpr double kMinAcross = 0.5;
+constexpr double kSmallStep = 0.05;
+// onto_rounded_bend moves the point onto a surface found farther than this fraction of the
+// face from it: nearer, the tangent planes' meeting point is as good.
+constexpr double kBendDepth = 0.1;
+// An X-junction (two interfaces crossing in the face): the opposite crossings of one surface
+// have normals within 60 degrees of each other (cosine above kSameCurveCosine), the two
+// surfaces' normals differ by more than about 18 degrees (cosine below kTransversalCosine).
+constexpr double kSameCurveCosine = 0.5;
+constexpr double kTransversalCosine = 0.95;
 
 struct Frame {
   Vec3 centre, normal;
@@ -66,7 +93,7 @@ double depth_inside(const Frame& f, const Vec3& p) {
 // farther than `reach` outside it.
 std::optional<Vec3> clamp_into(const Frame& f, Vec3 p, double margin, double reach) {
   if (depth_inside(f, p) < -reach) return std::nullopt;
-  for (int pass = 0; pass < 3; ++pass)
+  for (int pass = 0; pass < kClampPasses; ++pass)
     for (int k = 0; k < 4; ++k) {
       const Vec3 side = in_plane(f.corner[(k + 1) % 4] - f.corner[k], f.normal);
       const Vec3 inward = f.normal.cross(side).normalized();
@@ -91,7 +118,7 @@ class Contourer {
   Vec3 projected_normal(int i) const {
     const Vec3 m = in_plane(at(i).normal, frame_.normal);
     const double len = m.norm();
-    return len > 1e-12 ? Vec3(m / len) : Vec3::Zero();
+    return len > kMinInPlane ? Vec3(m / len) : Vec3::Zero();
   }
   Vec3 tangent_point(const std::vector<int>& points) const;
   int pinched_point() const;
@@ -131,7 +158,7 @@ Vec3 Contourer::tangent_point(const std::vector<int>& points) const {
     m.push_back(projected_normal(i));
     level.push_back(region_before(i) == 0 || region_after(i) == 0 ? 0 : 1);
   }
-  return onto_boundary(points, tangent_intersection_ranked(s, m, level, 2));
+  return onto_boundary(points, tangent_intersection_ranked(s, m, level, kFitRank));
 }
 
 // p moved least onto the domain's boundary planes at these interface points (p itself when
@@ -147,7 +174,7 @@ Vec3 Contourer::onto_boundary(const std::vector<int>& points, const Vec3& p) con
   // Only planes the octree's faces are parallel to (a box): on a curved boundary the lines
   // in the face are as good, and moving the point off them can fold the faces around it.
   return s.empty() || !std::all_of(m.begin(), m.end(), parallel_to_octree_faces) ? p
-                                                                                : tangent_intersection(s, m, p, 2);
+                                                                                : tangent_intersection(s, m, p, kFitRank);
 }
 
 // How well the chord p -> q agrees with the tangent lines at its ends: the normal at each
@@ -196,46 +223,46 @@ bool Contourer::keeps_margin(int p, int q, const Vec3& point) const {
 //   move on a plane face, where the traces meet on it).
 // - Then, given surface_near and off the root's boundary (a point between two layers there
 //   must stay in the box's plane), one Newton step: each surface found again beside x (along
-//   its normal moved into the other's tangent plane, a quarter face either way, 0.1 face
-//   along the surface away from the edge: on the other surface's plane the segment could
-//   run along it) and x moved to where the new tangent planes meet (kept on the domain's
-//   boundary planes, as tangent_point keeps it), unless the step is not small.
+//   its normal moved into the other's tangent plane, kNewtonReach of the face either way,
+//   shifted along the surface away from the edge: on the other surface's plane the segment
+//   could run along it) and x moved to where the new tangent planes meet (kept on the
+//   domain's boundary planes, as tangent_point keeps it), unless the step is not small.
 Vec3 Contourer::onto_feature(int p, int q, Vec3 x) const {
   // Both normals out of the region before p (the one after q).
   const Vec3 na = at(p).normal, nb = -at(q).normal;
   if (na.isZero() || nb.isZero()) return x;
-  x = tangent_intersection(std::array<Vec3, 2>{at(p).position, at(q).position}, std::array<Vec3, 2>{na, nb}, x, 2);
+  x = tangent_intersection(std::array<Vec3, 2>{at(p).position, at(q).position}, std::array<Vec3, 2>{na, nb}, x, kFitRank);
   if (!options_.surface_near || face_.on_root) return x;
   // The surfaces bound the region they point into where both normals point into it from
   // the chord p-q (it is convex at the edge), else where either does.
   const Vec3 mid = 0.5 * (at(p).position + at(q).position);
   const double side = na.dot(mid - x) + nb.dot(mid - x) > 0.0 ? 1.0 : -1.0;
-  const double reach = 0.25 * frame_.size;
+  const double reach = kNewtonReach * frame_.size;
   std::array<Vec3, 2> s, n;
   for (int k = 0; k < 2; ++k) {
     const Vec3 &own = k == 0 ? na : nb, &other = k == 0 ? nb : na;
     const Vec3 along = own - own.dot(other) * other;
-    if (!(along.norm() > 0.5)) return x;
-    const auto found = options_.surface_near(x + side * 0.4 * reach * other, reach * along.normalized());
+    if (!(along.norm() > kMinAcross)) return x;
+    const auto found = options_.surface_near(x + side * kShiftOfReach * reach * other, reach * along.normalized());
     if (!found || !(found->second.dot(own) > kSameSurfaceCosine)) return x;
     s[k] = found->first;
     n[k] = found->second;
   }
-  const Vec3 refined = onto_boundary({p, q}, tangent_intersection(s, n, x, 2));
-  return (refined - x).norm() < 0.05 * frame_.size ? refined : x;
+  const Vec3 refined = onto_boundary({p, q}, tangent_intersection(s, n, x, kFitRank));
+  return (refined - x).norm() < kSmallStep * frame_.size ? refined : x;
 }
 
 // A bend rounded over several of a coarse surface's facets (elephant's, about one per cell):
 // the planes of the facets at p and q meet beyond the surface between them, there by up to
 // half the face, and the Newton step found no two surfaces meeting there. When the surface
-// found from x along the traces' mean normal, within a face either way, lies farther than a
-// tenth of the face, x goes onto it: both segments then lie on the surface's side of it.
+// found from x along the traces' mean normal, within a face either way, lies farther than
+// kBendDepth of the face, x goes onto it: both segments then lie on the surface's side of it.
 Vec3 Contourer::onto_rounded_bend(int p, int q, const Vec3& x) const {
   if (!options_.surface_near || face_.on_root) return x;
   const Vec3 d = in_plane(at(p).normal - at(q).normal, frame_.normal);  // both out of the region before p
-  if (!(d.norm() > 1e-12)) return x;
+  if (!(d.norm() > kMinInPlane)) return x;
   const auto found = options_.surface_near(x, frame_.size * d.normalized());
-  return found && (found->first - x).norm() > 0.1 * frame_.size ? found->first : x;
+  return found && (found->first - x).norm() > kBendDepth * frame_.size ? found->first : x;
 }
 
 bool Contourer::try_feature_point(int p, int q) {
@@ -246,7 +273,8 @@ bool Contourer::try_feature_point(int p, int q) {
   // An edge on the side (to rounding, or moved there by the vertex moves) comes out on it or
   // just beyond: pulled just inside, it keeps the face's polygons apart.
   const double depth = depth_inside(frame_, point), slack = kSideSlack * frame_.size;
-  if (depth < slack && depth > -10.0 * slack) point = *clamp_into(frame_, point, slack, 10.0 * slack);
+  const double reach = kSideSlackReach * slack;
+  if (depth < slack && depth > -reach) point = *clamp_into(frame_, point, slack, reach);
   if (!keeps_margin(p, q, point)) return false;
   out_.kind = FacePointKind::feature_point;
   out_.point = point;
@@ -310,10 +338,10 @@ std::optional<Vec3> Contourer::x_junction() const {
   for (int k = 0; k < 2; ++k) {
     const int i = crossing_[k], j = crossing_[k + 2];
     const Vec3 ni = projected_normal(i), nj = -projected_normal(j);
-    if (ni.isZero() || nj.isZero() || !(ni.dot(nj) > 0.5)) return std::nullopt;
+    if (ni.isZero() || nj.isZero() || !(ni.dot(nj) > kSameCurveCosine)) return std::nullopt;
     curves[k] = {{at(i).position, at(j).position}, {ni, nj}};
   }
-  if (!(std::abs(curves[0].normal[0].dot(curves[1].normal[0])) < 0.95)) return std::nullopt;
+  if (!(std::abs(curves[0].normal[0].dot(curves[1].normal[0])) < kTransversalCosine)) return std::nullopt;
   return crossing_of_curves(curves[0], curves[1], frame_.normal);
 }
 

@@ -10,6 +10,10 @@
 namespace volmesh::cutcell {
 namespace {
 
+// A point this near a diagonal's plane, relative to the loop's size, lies on it: positions
+// computed along different routes agree to rounding.
+constexpr double kOnLine = 1e-9;
+
 bool may_join(const LoopPoints& points, int a, int b) { return (points.faces[a] & points.faces[b]) == 0; }
 
 // Area-weighted mean of the unit normals of the triangles (mass point, p_i, p_i+1) — (1) of
@@ -90,7 +94,7 @@ bool divide(const LoopPoints& points, std::vector<int> loop, std::vector<Triangl
   const MeanPlane plane = mean_plane(points, loop);
   double scale = 0.0;
   for (int v : loop) scale = std::max(scale, (points.position[v] - plane.centre).norm());
-  const double tolerance = 1e-9 * scale;
+  const double tolerance = kOnLine * scale;
   // Points strictly between i and j on one side of the diagonal, the others on the other.
   const auto separates = [&](int i, int j) {
     const Vec3& a = points.position[loop[i]];

@@ -13,12 +13,22 @@
 #include <unordered_map>
 #include <utility>
 
+#include "tangent_point.hpp"
 #include "volmesh/core/geometry.hpp"
 
 namespace volmesh::cutcell {
 namespace {
 
 constexpr int kNegative = 0, kPositive = 1;
+
+// Fractions of the cell's size: a point this near a plane lies on it (positions computed
+// along different routes agree to rounding); two surface faces meet at a reflex edge when
+// each sees the other's centre in front of it by more than kInFront.
+constexpr double kOnPlane = 1e-9;
+constexpr double kInFront = 1e-6;
+// A split is taken only when both parts keep this fraction of the cell's leaf cube: a
+// smaller part would be a tiny cell by the merging's default (merge_volume_ratio).
+constexpr double kMinPartVolume = 1e-3;
 
 struct Plane {
   Vec3 point, normal;
@@ -182,18 +192,18 @@ std::vector<Plane> ReflexSplitter::reflex_planes(Index c) const {
     loops.push_back(outward(f, c));
     g.push_back(polygon_geometry(points_(), loops.back()));
   }
-  const double tol = 1e-6 * size_[c];
+  const double tol = kInFront * size_[c];
   const auto planar = [&](std::size_t i) {
     const Vec3 n = g[i].area_vector.normalized();
     return std::all_of(loops[i].begin(), loops[i].end(),
-                       [&](Index v) { return std::abs(n.dot(points_()[v] - g[i].centre)) <= 1e-9 * size_[c]; });
+                       [&](Index v) { return std::abs(n.dot(points_()[v] - g[i].centre)) <= kOnPlane * size_[c]; });
   };
   std::vector<Plane> out;
   for (std::size_t i = 0; i < surface.size(); ++i)
     for (std::size_t j = 0; j < surface.size(); ++j) {
       if (i == j) continue;
       const Vec3 ni = g[i].area_vector.normalized(), nj = g[j].area_vector.normalized();
-      if (ni.dot(nj) > 0.9 || (g[j].centre - g[i].centre).dot(ni) <= tol || (g[i].centre - g[j].centre).dot(nj) <= tol)
+      if (ni.dot(nj) > kSameSurfaceCosine || (g[j].centre - g[i].centre).dot(ni) <= tol || (g[i].centre - g[j].centre).dot(nj) <= tol)
         continue;
       // Sharing an edge, u -> v in i and v -> u in j.
       const std::vector<Index>& a = loops[i];
@@ -205,7 +215,7 @@ std::vector<Plane> ReflexSplitter::reflex_planes(Index c) const {
       if (!shared || !planar(i)) continue;
       const Plane p{g[i].centre, ni};
       if (std::none_of(out.begin(), out.end(), [&](const Plane& q) {
-            return q.normal.dot(p.normal) > 1.0 - 1e-12 && std::abs(q.normal.dot(p.point - q.point)) <= tol;
+            return q.normal.dot(p.normal) > 1.0 - kSameDirection && std::abs(q.normal.dot(p.point - q.point)) <= tol;
           }))
         out.push_back(p);
     }
@@ -216,7 +226,7 @@ std::vector<Plane> ReflexSplitter::reflex_planes(Index c) const {
 // part its cell lies on), faces across it are split along a chord; the face between the
 // parts closes the edges of A's faces that no other face of A runs back along.
 std::optional<Split> ReflexSplitter::split(Index c, const Plane& plane) {
-  const double eps = 1e-9 * size_[c];
+  const double eps = kOnPlane * size_[c];
   Split s;
   std::map<std::pair<Index, Index>, Index> cut_of;  // edge -> new point (num_points + k)
   const Index base = mesh_.num_points();
@@ -338,7 +348,7 @@ double ReflexSplitter::split_worst(Index c, const Split& s) {
     if (f.face == kNoIndex) parts[kPositive].emplace_back(f.loop.rbegin(), f.loop.rend());
   }
   double w = std::numeric_limits<double>::infinity();
-  const double floor = 1e-3 * std::pow(size_[c], 3);
+  const double floor = kMinPartVolume * std::pow(size_[c], 3);
   const CellGeometry a = geometry(parts[kNegative]), b = geometry(parts[kPositive]);
   // A part of three faces would be a closed fold of no volume, not a cell.
   if (a.volume > floor && b.volume > floor && parts[0].size() > 3 && parts[1].size() > 3) {
@@ -459,7 +469,7 @@ std::optional<Split> ReflexSplitter::best_split(Index c, const std::vector<Plane
 }
 
 Index ReflexSplitter::run() {
-  // The cells with a reflex edge, found on both cores; a split changes only its cell's
+  // The cells with a reflex edge, found in parallel; a split changes only its cell's
   // faces and points on the faces around, so the cells are then taken in order.
   std::vector<char> reflex(base_cells_, 0);
   tbb::parallel_for(tbb::blocked_range<Index>(0, base_cells_), [&](const tbb::blocked_range<Index>& r) {

@@ -88,7 +88,7 @@ bool few_directions(std::span<const Vec3> normals, int max_planes, int min_point
   std::vector<Vec3> seen;
   std::vector<int> count;
   for (const Vec3& n : normals) {
-    const auto same = [&n](const Vec3& m) { return n.dot(m) > 1.0 - 1e-12; };
+    const auto same = [&n](const Vec3& m) { return n.dot(m) > 1.0 - kSameDirection; };
     const auto found = std::find_if(seen.begin(), seen.end(), same);
     if (found != seen.end()) {
       ++count[found - seen.begin()];

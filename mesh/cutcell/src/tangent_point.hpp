@@ -18,13 +18,17 @@
 namespace volmesh::cutcell {
 
 // Singular values below `relative_cutoff` times the largest are dropped, and at most
-// `max_rank` are kept (EMC truncates to rank 2 along a sharp edge).
+// `max_rank` are kept (EMC truncates to rank 2 along a sharp edge). The default drops a
+// direction the normals fix less than a tenth as firmly as the firmest one: two normals less
+// than about 11 degrees apart fix one direction, not two.
+inline constexpr double kRelativeCutoff = 0.1;
 Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
-                          int max_rank = 3, double relative_cutoff = 0.1);
+                          int max_rank = 3, double relative_cutoff = kRelativeCutoff);
 // The same relative to `origin` instead of the mass point: unconstrained directions keep
 // origin's coordinates.
 Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> normals,
-                          const Vec3& origin, int max_rank = 3, double relative_cutoff = 0.1);
+                          const Vec3& origin, int max_rank = 3,
+                          double relative_cutoff = kRelativeCutoff);
 
 // The same with the points in priority levels, 0 first: each level fits only the directions
 // the earlier levels leave free. A junction with the domain's boundary (level 0) stays on the
@@ -32,25 +36,30 @@ Vec3 tangent_intersection(std::span<const Vec3> points, std::span<const Vec3> no
 // interfaces meeting it do.
 Vec3 tangent_intersection_ranked(std::span<const Vec3> points, std::span<const Vec3> normals,
                                  std::span<const std::uint8_t> level, int max_rank = 3,
-                                 double relative_cutoff = 0.1);
+                                 double relative_cutoff = kRelativeCutoff);
 
 // The direction the normals leave free, when the least-squares fit drops it (its squared
 // singular value at most relative_cutoff^2 of the largest): along a junction line, where the
 // tangent planes of two or more surfaces meet.
-std::optional<Vec3> free_direction(std::span<const Vec3> normals, double relative_cutoff = 0.1);
+std::optional<Vec3> free_direction(std::span<const Vec3> normals,
+                                   double relative_cutoff = kRelativeCutoff);
 
-// Normals within 25 degrees of each other (cosine above this) belong to one surface.
+// Unit normals whose cosine exceeds 1 - kSameDirection have one direction: the normals of one
+// plane agree to rounding.
+inline constexpr double kSameDirection = 1e-12;
+
+// Normals within about 26 degrees of each other (cosine above this) belong to one surface.
 inline constexpr double kSameSurfaceCosine = 0.9;
 
 // The interface found again near x: the crossing nearest x of the segment x -+ d whose
-// normal lies within 25 degrees of d, with that normal; nullopt if none.
+// normal lies within about 26 degrees of d, with that normal; nullopt if none.
 using SurfaceNear = std::function<std::optional<std::pair<Vec3, Vec3>>(const Vec3& x, const Vec3& d)>;
 
 struct TangentPlanes {
   std::vector<Vec3> points, normals;
 };
 // The tangent planes of the surfaces meeting at a feature point x, found again beside it:
-// the normals n (at points s) grouped into surfaces (within 25 degrees), each surface found
+// the normals n (at points s) grouped into surfaces (kSameSurfaceCosine), each surface found
 // on the segment x -+ reach * m, m the normal of its point nearest x, moved `shift` along the
 // surface toward its points (a surface ending at the feature lies on that side). Where the
 // new planes meet is one Newton step from x: off the surfaces by the square of x's distance,

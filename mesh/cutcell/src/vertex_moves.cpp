@@ -1,7 +1,8 @@
-// Tiny cut cells (DESIGN.md §4): a crossing very close to a grid vertex makes an arbitrarily
-// thin piece. The vertex is moved off the interface instead, so that every crossing on its
-// edges lies at least `clearance` of the edge away from it. The interface points stay exact
-// crossings of the domain, so the geometry keeps its second order; only the grid warps.
+// Tiny cut cells (docs/methods.md, "Tiny cut cells"): a crossing very close to a grid vertex
+// makes an arbitrarily thin piece. The vertex is moved off the interface instead, so that
+// every crossing on its edges lies at least `clearance` of the edge away from it. The
+// interface points stay exact crossings of the domain, so the geometry keeps its second
+// order; only the grid warps.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -14,6 +15,13 @@
 
 namespace volmesh::cutcell {
 namespace {
+
+// A move's step: this times the clearance times the vertex's shortest edge, so that the
+// vertex lands clear of the interface with a margin rather than exactly at the clearance.
+constexpr double kMoveStep = 1.5;
+// Crossings whose normals' cosine exceeds this (within about 2.6 degrees) lie on one plane
+// for across_planes: moving across it twice would double the step.
+constexpr double kSamePlaneCosine = 0.999;
 
 // Around vertex v: the far ends of its fine edges (along each leaf edge through v, the
 // nearest vertex: a midpoint when the edge has one), and the split leaf edges it ends, as
@@ -57,7 +65,7 @@ std::vector<Vec3> across_planes(const Vec3& x, const std::vector<Crossing>& cros
   std::vector<const Crossing*> planes;
   for (const Crossing& c : crossings)
     if (std::none_of(planes.begin(), planes.end(),
-                     [&c](const Crossing* p) { return p->normal.dot(c.normal) > 0.999; }))
+                     [&c](const Crossing* p) { return p->normal.dot(c.normal) > kSamePlaneCosine; }))
       planes.push_back(&c);
   const auto across = [&x, step](std::span<const Crossing* const> set) {
     Vec3 p = x;
@@ -154,7 +162,7 @@ bool Mover::move(Index v, const Around& around) {
   // nearer moves and moves along the axes, keeping the one that clears the most.
   const Vec3 n = nearest.crossing.normal;
   const Vec3& at = nearest.crossing.point;
-  const double step = 1.5 * clearance_ * shortest;
+  const double step = kMoveStep * clearance_ * shortest;
   const Index own = grid_.region[v], other = nearest.crossing.after;
   const bool hanging = grid_.vertices.hanging[v] != 0;
   const double first = other == 0 && own != 0 && !hanging ? 1.0 : -1.0;
@@ -208,7 +216,7 @@ bool Mover::move(Index v, const Around& around) {
 
 // The pending vertices are moved in index order, each seeing the moves of those before it.
 // Two of them interact only through the vertices around them (their edges' far ends and the
-// far corners of their split edges), so they are moved in waves on both cores: a vertex
+// far corners of their split edges), so they are moved in parallel waves: a vertex
 // waits for the wave after the last of its interacting vertices with a lower index. The
 // result is the sequential one, for any number of threads.
 std::array<Index, 2> Mover::run() {

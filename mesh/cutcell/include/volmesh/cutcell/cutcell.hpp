@@ -1,6 +1,6 @@
 #pragma once
 // The cut-cell octree mesher: MMCMS, the multiple-material cubical marching squares of the
-// octree paper (Chernyshenko; DESIGN.md §4). An octree refined toward the boundaries and
+// octree paper (Chernyshenko; docs/methods.md, "cutcell"). An octree refined toward the boundaries and
 // interfaces, each leaf whose vertices lie in more than one region cut into polyhedral
 // pieces along a triangulated approximation of the interfaces, the outside (region 0)
 // dropped. The mesh approximates boundaries and interfaces to second order while staying
