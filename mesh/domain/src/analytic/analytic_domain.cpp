@@ -39,7 +39,11 @@ Box3 labelled_bounds(const std::vector<Box3>& boxes, const std::vector<Index>& t
 // exact, so a region is found as soon as one line passes through it).
 std::vector<Index> labels_on_lines(const Domain& d, const Box3& box) {
   constexpr int kLines = 32;
-  const Vec3 margin = 1e-3 * box.size() + Vec3::Constant(1e-12);
+  // The lines start and end this fraction of the box outside it (and a little more for a
+  // flat box), so that every one begins and ends in region 0.
+  constexpr double kMargin = 1e-3;
+  constexpr double kFlatMargin = 1e-12;
+  const Vec3 margin = kMargin * box.size() + Vec3::Constant(kFlatMargin);
   const Vec3 lo = box.lo - margin, size = box.size() + 2.0 * margin;
   std::vector<Index> seen;
   for (int axis = 0; axis < 3; ++axis) {
@@ -81,9 +85,11 @@ AnalyticDomain::AnalyticDomain(std::vector<Primitive> primitives, std::vector<In
   for (const Primitive& p : primitives_) {
     boxes.push_back(analytic::world_bounds(p));
     // A point outside the grown box is certainly outside the primitive: most queries
-    // skip the exact test, and rounding in the box never changes an answer.
+    // skip the exact test, and rounding in the box never changes an answer (the growth,
+    // relative to the box's size and position, is far above the rounding of its corners).
+    constexpr double kGrowth = 1e-9;
     const Box3& b = boxes.back();
-    const Vec3 pad = 1e-9 * (b.size() + b.lo.cwiseAbs() + b.hi.cwiseAbs());
+    const Vec3 pad = kGrowth * (b.size() + b.lo.cwiseAbs() + b.hi.cwiseAbs());
     reach_.push_back({b.lo - pad, b.hi + pad});
   }
   bounds_ = labelled_bounds(boxes, table_);

@@ -161,11 +161,14 @@ struct ShapeProblem {  // nullptr when the shape is valid
 Box3 world_bounds(const Primitive& prim) { return std::visit(BoundsOf{prim.frame}, prim.shape); }
 
 void validate(const Primitive& prim, int index) {
+  // RᵀR may differ from the identity by the rounding of a rotation built from angles, not
+  // more.
+  constexpr double kOrthonormal = 1e-9;
   const Rigid& f = prim.frame;
   const bool rigid = f.rotation.allFinite() && f.translation.allFinite() &&
                      (f.rotation.transpose() * f.rotation - Eigen::Matrix3d::Identity())
                              .cwiseAbs()
-                             .maxCoeff() < 1e-9 &&
+                             .maxCoeff() < kOrthonormal &&
                      f.rotation.determinant() > 0.0;
   if (!rigid) throw InputError(describe(prim, index) + ": frame is not a rigid motion");
   if (const char* problem = std::visit(ShapeProblem{}, prim.shape))

@@ -10,6 +10,10 @@
 namespace volmesh {
 namespace {
 
+// Two surfaces through a point coincide there when their unit normals are parallel to within
+// this (|n_i x n_j|): rounding, not a real angle.
+constexpr double kParallel = 1e-9;
+
 using Mask = AnalyticDomain::Mask;
 
 struct Tie {
@@ -38,7 +42,7 @@ AnalyticDomain::Mask AnalyticDomain::winner(Masks m, const Vec3& p) const {
     for (std::size_t i = 0; i < primitives_.size(); ++i)
       for (std::size_t j = i + 1; j < primitives_.size(); ++j)
         if ((m.on >> i & 1) && (m.on >> j & 1) && n_ties < int(ties.size()) &&
-            normal[i].cross(normal[j]).norm() < 1e-9)
+            normal[i].cross(normal[j]).norm() < kParallel)
           ties[n_ties++] = {Mask{1} << i | Mask{1} << j, normal[i].dot(normal[j]) > 0.0};
   }
   Mask best = m.in;

@@ -1,4 +1,4 @@
-// Batch queries: both cores through TBB; each result is written at its own index, so the
+// Batch queries: in parallel through TBB; each result is written at its own index, so the
 // output does not depend on the thread count or the scheduling.
 #include "volmesh/domain/domain.hpp"
 

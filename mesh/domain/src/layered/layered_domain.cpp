@@ -153,12 +153,13 @@ LayeredDomain::LayeredDomain(LayeredModel model)
   // The labels met along vertical lines through the box.
   const Box3& box = model_->box;
   constexpr int kLines = 32;
+  constexpr double kLineMargin = 0.01;  // of the box's height, below and above it: region 0
   std::vector<Vec3> a, b;
   for (int j = 0; j < kLines; ++j)
     for (int i = 0; i < kLines; ++i) {
       const double x = box.lo.x() + (i + 0.5) / kLines * (box.hi.x() - box.lo.x());
       const double y = box.lo.y() + (j + 0.5) / kLines * (box.hi.y() - box.lo.y());
-      const double margin = 0.01 * (box.hi.z() - box.lo.z());
+      const double margin = kLineMargin * (box.hi.z() - box.lo.z());
       a.emplace_back(x, y, box.lo.z() - margin);
       b.emplace_back(x, y, box.hi.z() + margin);
     }

@@ -23,6 +23,9 @@ using Point2 = Kernel::Point_2;
 using Point3 = Kernel::Point_3;
 
 constexpr double kSnap = 1e-6;  // relative to the rectangle's sides
+// The projections' areas add up to the rectangle's to this relative rounding when they tile
+// it once; a sheet covering it twice is off by a whole rectangle.
+constexpr double kAreaRounding = 1e-9;
 
 Point3 point3(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
@@ -162,7 +165,7 @@ GraphSheet::GraphSheet(const Sheet& sheet, const Box3& box, const std::string& m
   // Border edges on the border and no fold: the projections cover the rectangle a whole
   // number of times, which the area tells.
   const double rectangle = (u1_ - u0_) * (v1_ - v0_);
-  if (std::abs(area - rectangle) > 1e-9 * rectangle)
+  if (std::abs(area - rectangle) > kAreaRounding * rectangle)
     throw InputError(who + ": its triangles cover the box's " + plane + " " +
                      std::to_string(std::lround(area / rectangle)) +
                      " times over: the sheet is not a graph over it");

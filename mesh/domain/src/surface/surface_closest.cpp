@@ -96,7 +96,9 @@ ClosestPoint ClosestTree::closest(const Vec3& p, Index hint) const {
   const double slack = (qr - q).norm();
   // Far above the rounding of the float operations of the cylinder distance (a few float
   // epsilons of the coordinates involved).
-  const Float4 eps = Float4{} + static_cast<float>(1e-5 * (q.lpNorm<Eigen::Infinity>() + scale_));
+  constexpr double kFloatSlack = 1e-5;
+  const Float4 eps =
+      Float4{} + static_cast<float>(kFloatSlack * (q.lpNorm<Eigen::Infinity>() + scale_));
   float limit = 0.0f;
   const auto update_limit = [&] {
     const double r = std::sqrt(best.squared_distance) + slack;

@@ -16,6 +16,12 @@ namespace volmesh::surface {
 
 namespace {
 
+// The first rays of the winding number run along the axes tilted by these slopes (no simple
+// fractions), so that they miss the edges and vertices of axis-aligned meshes.
+constexpr double kRayTilt1 = 0.0731, kRayTilt2 = 0.0417;
+// A ray ends this fraction of the surfaces' box diagonal beyond the box.
+constexpr double kRayBeyond = 1e-3;
+
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Segment = Kernel::Segment_3;
@@ -114,7 +120,7 @@ struct ExactTree::Impl {
     const Box3 b = bounding_box(g);
     lo = b.lo;
     hi = b.hi;
-    margin = 1e-3 * (hi - lo).norm() + 1e-300;
+    margin = kRayBeyond * (hi - lo).norm() + 1e-300;
   }
 
   std::vector<SegmentHit> hits(const Point& a, const Point& b) const {
@@ -183,8 +189,8 @@ std::vector<Containment> ExactTree::containment(const Vec3& p) const {
   for (int k = 0; k < 6; ++k) {
     Vec3 d(0.0, 0.0, 0.0);
     d[k / 2] = k % 2 ? -1.0 : 1.0;
-    d[(k / 2 + 1) % 3] = 0.0731;
-    d[(k / 2 + 2) % 3] = 0.0417;
+    d[(k / 2 + 1) % 3] = kRayTilt1;
+    d[(k / 2 + 2) % 3] = kRayTilt2;
     axes[k] = d;
   }
   std::array<Vec3, 6> ends;

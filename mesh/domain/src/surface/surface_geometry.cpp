@@ -103,7 +103,8 @@ void add_surface(SurfaceGeometry& g, TriSurface s, const std::string& name) {
     const Vec3 u = s.points[c[1]] - s.points[c[0]], v = s.points[c[2]] - s.points[c[0]];
     area_normals[t] = u.cross(v);
     // Far above the rounding of the cross product: the corners are not collinear, exactly.
-    if (!(area_normals[t].norm() > 1e-14 * u.norm() * v.norm()))
+    constexpr double kCollinear = 1e-14;
+    if (!(area_normals[t].norm() > kCollinear * u.norm() * v.norm()))
       throw InputError(name + ": triangle " + std::to_string(t) + ": degenerate, its vertices " +
                        std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
                        std::to_string(c[2]) + " are collinear (to rounding)");

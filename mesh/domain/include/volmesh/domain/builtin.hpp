@@ -1,6 +1,6 @@
 #pragma once
 // Built-in domains, named as on the command line without the "builtin:" prefix
-// (DESIGN.md §3):
+// (docs/methods.md, "Domains"):
 //   box             the unit cube [0, 1]^3
 //   ball            the unit ball
 //   primitives      the octree paper's §5.2 scene: ball, box and cylinder overlapping, each

@@ -1,6 +1,6 @@
 #pragma once
-// What every mesher takes (DESIGN.md §4): a partition of space into regions, with the
-// interfaces between them. Region 0 is outside; regions are numbered from 1.
+// What every mesher takes (docs/methods.md, "Domains"): a partition of space into regions, with
+// the interfaces between them. Region 0 is outside; regions are numbered from 1.
 #include <span>
 #include <string>
 #include <vector>
@@ -51,7 +51,7 @@ class Domain {
   // the boundary faces of a mesh; surface_name(p) unless the domain knows its boundary better.
   virtual std::string boundary_name(const Vec3& p) const { return surface_name(p); }
 
-  // Batch versions: both cores, same results as the single queries in the same order.
+  // Batch versions: in parallel, same results as the single queries in the same order.
   // Subclasses override them where a batch can be answered faster than point by point.
   virtual void region(std::span<const Vec3> points, std::span<Index> out) const;
   virtual void crossings(std::span<const Vec3> a, std::span<const Vec3> b,

@@ -1,6 +1,6 @@
 #pragma once
-// A scalar grid's field as a Domain: the signed-distance voxels of the hexdc method
-// (VoxelGrid, core/voxel_grid.hpp), positive inside, negative outside, as in the hex paper.
+// A scalar grid's field as a Domain: signed-distance voxels (VoxelGrid, core/voxel_grid.hpp,
+// as `volmesh sdf` writes them), positive inside, negative outside, as in the hex paper.
 #include <array>
 #include <cstdint>
 
@@ -11,8 +11,8 @@ namespace volmesh {
 
 // The grid's field f as a Domain, f being the trilinear interpolant of the samples on the
 // grid's box (region 0 outside the box).
-//  - region(p) = 1 where f(p) >= 0: a point on the zero level set is inside, as in the paper
-//    (nodes with F >= 0 get hexdc vertices) and as the Domain contract gives points on an
+//  - region(p) = 1 where f(p) >= 0: a point on the zero level set is inside, as in the hex
+//    paper (its nodes with F >= 0 are inside) and as the Domain contract gives points on an
 //    interface the solid's region. 0 where f < 0.
 //  - crossings: exact for the interpolant. Along a segment f is a cubic in t inside each cell;
 //    every root in every cell the segment passes is found (split into monotone pieces at the

@@ -1,9 +1,9 @@
 #pragma once
-// Signed-distance voxels from a closed surface, the input of the hexdc mesher (the hex paper,
-// DESIGN.md §4): SD(p) = S(p) D(p), D the exact distance to the nearest triangle, S = +1
-// inside, -1 outside (the paper's convention). The sign comes from the angle-weighted
-// pseudo-normal of the nearest face, edge or vertex (Bærentzen & Aanæs 2005), which is right
-// for a closed, manifold surface; near a self-intersection it may not be.
+// Signed-distance voxels from a closed surface (`volmesh sdf`, as the hex paper's
+// dual-contouring mesher takes them): SD(p) = S(p) D(p), D the exact distance to the nearest
+// triangle, S = +1 inside, -1 outside (the paper's convention). The sign comes from the
+// angle-weighted pseudo-normal of the nearest face, edge or vertex (Bærentzen & Aanæs 2005),
+// which is right for a closed, manifold surface; near a self-intersection it may not be.
 #include <functional>
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// Domains bounded by closed triangulated surfaces (DESIGN.md §1, "surface domains"): one
-// surface makes one solid; surfaces nested in each other make nested regions.
+// Domains bounded by closed triangulated surfaces (docs/methods.md, "Domains"): one surface
+// makes one solid; surfaces nested in each other make nested regions.
 //
 //  - region(p): the label of the innermost surface containing p, 0 outside all. Surfaces
 //    must not cross each other; their nesting is found once, from one vertex of each. A point
