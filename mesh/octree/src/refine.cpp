@@ -31,7 +31,7 @@ class RegionCache {
   // `tree` is the tree being refined: it changes between fills, only its root matters.
   RegionCache(const Octree& tree, const Domain& domain) : tree_(tree), domain_(domain) {}
 
-  // Queries the points (Morton codes) not seen yet, batched on both cores.
+  // Queries the points (Morton codes) not seen yet, batched and in parallel.
   void fill(std::vector<std::uint64_t> codes) {
     tbb::parallel_sort(codes.begin(), codes.end());
     codes.erase(std::unique(codes.begin(), codes.end()), codes.end());

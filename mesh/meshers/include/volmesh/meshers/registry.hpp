@@ -23,7 +23,7 @@ namespace volmesh::meshers {
 
 // How fine a method is told to mesh.
 enum class Resolution {
-  level,  // an octree depth at the boundaries and interfaces (DESIGN.md §3: --level)
+  level,  // an octree depth at the boundaries and interfaces (--level, docs/architecture.md)
   size,   // a target edge length (--size)
 };
 

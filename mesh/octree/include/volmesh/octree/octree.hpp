@@ -1,6 +1,7 @@
 #pragma once
 // Linear octree over a cubic root, refined toward a domain's boundaries and interfaces and
-// 2:1 balanced across faces and edges (the octree paper §1.1, §4; DESIGN.md §3-4).
+// 2:1 balanced across faces and edges (the octree paper §1.1, §4; docs/methods.md, "The
+// octree").
 //
 // Integer grid. Every position is an integer point on the finest grid: the root cube spans
 // [0, 2^kOctreeMaxLevel] on each axis, a leaf of level l has edge 2^(kOctreeMaxLevel - l)
@@ -163,7 +164,7 @@ std::vector<OctreeLeaf> split_balanced(Octree& tree, std::vector<Index> leaves);
 
 // A leaf is selected by `select(tree, leaf)`; refine() splits every selected leaf below
 // max_level, rebalances, and evaluates `select` again on the whole new tree, until no leaf
-// below max_level is selected. `select` runs concurrently on both cores and must be
+// below max_level is selected. `select` runs concurrently on several threads and must be
 // thread-safe; it may look at neighbours. Returns the number of passes that split something.
 // The tree must be balanced on entry (build_octree, balance and refine leave it so): the
 // balance is restored around the splits only.
@@ -174,7 +175,7 @@ int refine(Octree& tree, const LeafPredicate& select, int max_level);
 // `domain` or one of their twelve edges is crossed by an interface (Domain::crossings, which
 // also catches an edge crossed twice between equal end regions), keeping the tree balanced
 // (it must be balanced on entry); leaves that balancing creates are checked too. Region and
-// crossing queries are batched on both cores.
+// crossing queries are batched and run in parallel.
 void refine_toward(Octree& tree, const Domain& domain, int level);
 
 // Buffer layers between levels (snappyHexMesh's nCellsBetweenLevels): from the finest level

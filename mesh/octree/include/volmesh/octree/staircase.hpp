@@ -1,6 +1,6 @@
 #pragma once
-// The staircase mesher (DESIGN.md §4): the octree refined toward the boundaries and
-// interfaces, each leaf kept as a cube when its centre lies in a region (region 0 dropped).
+// The staircase mesher (docs/methods.md, "staircase"): the octree refined toward the boundaries
+// and interfaces, each leaf kept as a cube when its centre lies in a region (region 0 dropped).
 // The first-order baseline the cut-cell convergence studies compare against.
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/core/progress.hpp"
