@@ -37,8 +37,10 @@ std::optional<VirtualElement> virtual_element(const PolyMesh& mesh, const FaceSp
     else
       e.gradient[local(loop[t.r])] += third;
   });
-  // A cell thinner than 1e-12 of its size is as degenerate as a flat sub-tetrahedron.
-  if (!(e.volume > 1e-12 * longest * longest * longest)) return std::nullopt;
+  // A cell thinner than this of its size is as degenerate as a flat sub-tetrahedron (the
+  // same threshold as the star centre's, geometry/cell_tessellation.cpp).
+  constexpr double kDegenerateShape = 1e-12;
+  if (!(e.volume > kDegenerateShape * longest * longest * longest)) return std::nullopt;
   e.centroid = moment / e.volume;
   for (Vec3& g : e.gradient) g /= e.volume;
   return e;

@@ -10,6 +10,19 @@
 namespace volmesh::fem {
 namespace {
 
+// project_along_normals, in fractions of the domain's bounding-box diagonal: the first search
+// reaches kFirstReach either way and grows by kReachGrowth until it finds the boundary; the
+// iteration stops when a step moves the point by at most kSettled (rounding), or after
+// kMaxSteps; each later search reaches twice the distance found plus kReachSlack.
+constexpr double kFirstReach = 0.01;
+constexpr double kReachGrowth = 4.0;
+constexpr double kSettled = 1e-14;
+constexpr int kMaxSteps = 50;
+constexpr double kReachSlack = 1e-9;
+// The step off a surface point that tells which regions lie on its two sides (analytic
+// domains): far above rounding, far below any feature of a domain.
+constexpr double kSideStep = 1e-9;
+
 bool separates_from_outside(const Crossing& c) {
   return c.before != c.after && (c.before == 0 || c.after == 0);
 }
@@ -66,19 +79,19 @@ Vec3 project_along_normals(const Domain& domain, const Vec3& p) {
   const double size = domain.bounds().size().norm();
   Vec3 n = domain.normal(p);
   std::optional<Vec3> q;
-  double reach = 0.01 * size;
-  for (int step = 0; step < 50;) {
+  double reach = kFirstReach * size;
+  for (int step = 0; step < kMaxSteps;) {
     const std::optional<Crossing> c = nearest_outer_crossing(domain, p, n, reach);
     if (!c) {
       if (reach > size) break;
-      reach *= 4.0;
+      reach *= kReachGrowth;
       continue;
     }
-    const bool settled = q && (c->point - *q).norm() <= 1e-14 * size;
+    const bool settled = q && (c->point - *q).norm() <= kSettled * size;
     q = c->point;
     n = c->normal;
     if (settled) break;
-    reach = 2.0 * (*q - p).norm() + 1e-9 * size;
+    reach = 2.0 * (*q - p).norm() + kReachSlack * size;
     ++step;
   }
   return q ? *q : p;
@@ -87,7 +100,7 @@ Vec3 project_along_normals(const Domain& domain, const Vec3& p) {
 PointMap true_boundary_map(const Domain& domain) {
   const Domain* d = &domain;
   if (const auto* analytic = dynamic_cast<const AnalyticDomain*>(d)) {
-    const double step = 1e-9 * domain.bounds().size().norm();
+    const double step = kSideStep * domain.bounds().size().norm();
     return [analytic, step](const Vec3& p) { return closest_on_analytic(*analytic, p, step); };
   }
   return [d](const Vec3& p) { return project_along_normals(*d, p); };

@@ -1,9 +1,9 @@
 #pragma once
-// What a solver is asked (DESIGN.md §5): coefficients per region, data per boundary tag, and,
-// when known, the exact solution the errors are measured against. Boundary data are
-// evaluated on the TRUE boundary: a mesh boundary point is first mapped by to_true_boundary
-// (a staircase face lies O(h) away from the surface it stands for; evaluating there would hide
-// the geometric error the studies measure).
+// What a solver is asked (docs/methods.md, "Problems"): coefficients per region, data per
+// boundary tag, and, when known, the exact solution the errors are measured against. Boundary
+// data are evaluated on the TRUE boundary: a mesh boundary point is first mapped by
+// to_true_boundary (a staircase face lies O(h) away from the surface it stands for; evaluating
+// there would hide the geometric error the studies measure).
 #include <functional>
 #include <map>
 #include <string>

@@ -1,8 +1,8 @@
 #pragma once
-// The problem library (DESIGN.md §5): named manufactured and analytic solutions, and cases a
-// user gives as expressions, turned into a PoissonProblem / ElasticityProblem for a domain and
-// the boundary tag names of a mesh of it. Boundary data are evaluated on the TRUE boundary
-// (true_boundary_map).
+// The problem library (docs/methods.md, "Problems"): named manufactured and analytic solutions,
+// and cases a user gives as expressions, turned into a PoissonProblem / ElasticityProblem for a
+// domain and the boundary tag names of a mesh of it. Boundary data are evaluated on the TRUE
+// boundary (true_boundary_map).
 //
 // Poisson, −∇·(k∇u) = f:
 //   sine            u = sin(x+0.3)·sin(2y+0.1)·sin(3z+0.7), k = 1, f = 14u, u given on every tag

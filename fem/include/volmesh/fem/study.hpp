@@ -1,7 +1,7 @@
 #pragma once
-// Convergence studies (DESIGN.md §5): one problem solved on a sequence of meshes, the errors
-// per level and the observed orders — pairwise rates between consecutive levels and the
-// least-squares slope of log(error) against log(h) over all levels.
+// Convergence studies (docs/verification.md, "Solver convergence"): one problem solved on a
+// sequence of meshes, the errors per level and the observed orders — pairwise rates between
+// consecutive levels and the least-squares slope of log(error) against log(h) over all levels.
 //
 // The driver takes the mesher and the solver as functions, so that it serves every method
 // (octree, cut cells, grids) and every space without depending on them.
