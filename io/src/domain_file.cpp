@@ -232,7 +232,10 @@ Sheet plane_sheet_of(const JsonValue& plane, const Box3& box, const std::string&
   plane.expect_keys({"point", "normal"});
   const Vec3 point = plane["point"].vec3(), normal = plane["normal"].direction();
   if (axis < 0) normal.cwiseAbs().maxCoeff(&axis);
-  if (std::abs(normal[axis]) < 1e-6 * normal.norm())
+  // A normal with less than this share along the axis leaves the plane nearly parallel to it:
+  // its graph over the box's face would climb a million times its run.
+  constexpr double kLeastAxisShare = 1e-6;
+  if (std::abs(normal[axis]) < kLeastAxisShare * normal.norm())
     plane["normal"].fail("the plane is not a graph over the box's face across axis " +
                          std::string(1, "xyz"[axis]));
   return plane_sheet(box, axis, point, normal, name);

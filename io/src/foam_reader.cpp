@@ -9,11 +9,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <map>
 #include <string>
 #include <string_view>
 
+#include "text_format.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/mesh_io.hpp"
 
@@ -80,14 +80,14 @@ class FoamTokens {
   long long integer(const char* what) {
     const std::string_view t = next();
     long long v = 0;
-    if (t.empty() || !parse(t, v)) fail(std::string("expected ") + what + ", found '" + shown(t) + "'");
+    if (t.empty() || !parse_number(t, v)) fail(std::string("expected ") + what + ", found '" + shown(t) + "'");
     return v;
   }
 
   double real() {
     const std::string_view t = next();
     double v = 0;
-    if (t.empty() || !parse(t, v)) fail("expected a number, found '" + shown(t) + "'");
+    if (t.empty() || !parse_number(t, v)) fail("expected a number, found '" + shown(t) + "'");
     return v;
   }
 
@@ -130,12 +130,6 @@ class FoamTokens {
 
  private:
   static bool is_punct(char c) { return c == '(' || c == ')' || c == '{' || c == '}' || c == ';'; }
-  template <class T>
-  static bool parse(std::string_view t, T& v) {
-    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-    auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && p == t.data() + t.size();
-  }
   static std::string shown(std::string_view t) { return std::string(t.substr(0, 40)); }
 
   void skip_space_and_comments() {

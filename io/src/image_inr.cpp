@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "text_format.hpp"
 #include "voxel_output.hpp"
 #include "voxel_samples.hpp"
 #include "voxel_stream.hpp"
@@ -98,14 +99,14 @@ class InrHeader {
 
   std::int64_t integer(const std::string& key) const {
     std::int64_t value;
-    if (!parse_number(field(key), value)) fail(path_, key + "=" + field(key) + ": not an integer");
+    if (!parse_field(field(key), value)) fail(path_, key + "=" + field(key) + ": not an integer");
     return value;
   }
 
   double number(const std::string& key, double fallback) const {
     if (!has(key)) return fallback;
     double value;
-    if (!parse_number(field(key), value)) fail(path_, key + "=" + field(key) + ": not a number");
+    if (!parse_field(field(key), value)) fail(path_, key + "=" + field(key) + ": not a number");
     return value;
   }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "text_format.hpp"
 #include "voxel_output.hpp"
 #include "voxel_samples.hpp"
 #include "voxel_stream.hpp"
@@ -124,7 +125,7 @@ class NrrdHeader {
     std::array<T, 3> values;
     std::string word;
     for (T& x : values)
-      if (!(words >> word) || !parse_number(word, x))
+      if (!(words >> word) || !parse_field(word, x))
         fail(path_, key + ": " + field(key) + ": expected 3 numbers");
     if (words >> word) fail(path_, key + ": " + field(key) + ": expected 3 numbers");
     return values;
@@ -139,7 +140,7 @@ class NrrdHeader {
       while (true) {
         const std::size_t comma = inside.find(',');
         double x;
-        if (!parse_number(inside.substr(0, comma), x)) break;
+        if (!parse_field(inside.substr(0, comma), x)) break;
         values.push_back(x);
         if (comma == std::string_view::npos) break;
         inside.remove_prefix(comma + 1);

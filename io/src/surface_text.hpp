@@ -7,21 +7,14 @@
 #include <string_view>
 #include <system_error>
 
+#include "text_format.hpp"
+
 namespace volmesh::surface_detail {
 
 inline bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
 inline bool is_space(char c) { return is_blank(c) || c == '\n'; }
-
-// Parses all of `w` (a leading '+' allowed, which from_chars refuses).
-template <class T>
-bool parse_number(std::string_view w, T& value) {
-  if (!w.empty() && w.front() == '+') w.remove_prefix(1);
-  if (w.empty()) return false;
-  auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
-  return ec == std::errc() && ptr == w.data() + w.size();
-}
 
 // Parses a header count; a count too large for 64 bits saturates, so that the caller reports
 // it as over the index limit rather than as malformed.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 
 #include "text_format.hpp"
@@ -36,23 +35,6 @@ std::string format_number(double x) {
   append_number(text, x);
   return text;
 }
-
-namespace {
-
-template <class T>
-bool parse_whole(std::string_view text, T& x) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-  while (!text.empty() && blank(text.front())) text.remove_prefix(1);
-  while (!text.empty() && blank(text.back())) text.remove_suffix(1);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);  // from_chars refuses '+'
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
-  return ec == std::errc() && end == text.data() + text.size() && !text.empty();
-}
-
-}  // namespace
-
-bool parse_number(std::string_view text, double& x) { return parse_whole(text, x); }
-bool parse_number(std::string_view text, std::int64_t& x) { return parse_whole(text, x); }
 
 std::int64_t checked_count(const std::filesystem::path& path,
                            const std::array<std::int64_t, 3>& dims, const std::string& field) {

@@ -80,9 +80,6 @@ std::string sample_position(const std::array<Index, 3>& dims, std::int64_t n);
 
 // Shortest text that reads back to the same double, independent of the locale.
 std::string format_number(double x);
-// Parses a whole field (surrounding blanks allowed); false if it is not one number.
-bool parse_number(std::string_view text, double& x);
-bool parse_number(std::string_view text, std::int64_t& x);
 
 // Number of samples for `dims`, each >= 1 and their product <= kMaxSamples; otherwise an
 // InputError naming the file and `field`. Checked before anything is allocated.

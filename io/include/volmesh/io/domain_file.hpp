@@ -1,6 +1,6 @@
 #pragma once
 // Domain files (.json): several labelled closed surfaces, layers between triangulated
-// sheets, or analytic solids, described in README.md ("Domain files"). Paths inside are
+// sheets, or analytic solids, described in docs/methods.md ("Domain files"). Paths inside are
 // relative to the file.
 #include <filesystem>
 #include <memory>

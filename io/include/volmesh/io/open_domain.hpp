@@ -1,5 +1,5 @@
 #pragma once
-// Opening the <domain> argument of the command line (DESIGN.md §3) as a Domain.
+// Opening the <domain> argument of the command line (docs/architecture.md) as a Domain.
 //
 // Accepted, by prefix or extension (case-insensitive):
 //   builtin:NAME             a built-in domain (builtin.hpp)
