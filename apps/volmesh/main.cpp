@@ -1,4 +1,4 @@
-// volmesh: one binary, subcommands (DESIGN.md §3). Exit codes: 0 success, 2 bad usage,
+// volmesh: one binary, subcommands (docs/architecture.md). Exit codes: 0 success, 2 bad usage,
 // 1 bad input or failure with one line on stderr.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -16,13 +16,19 @@
 namespace {
 
 // The meshers build and drop tables of tens of megabytes pass after pass. glibc hands large
-// blocks back to the system on free, so every pass paid its page faults again (up to a
-// tenth of a run); kept in the heap, they are reused.
+// blocks back to the system on free, and every pass would pay its page faults again (up to
+// a tenth of a run); kept in the heap, they are reused: blocks up to kMmapThreshold come
+// from the heap, which is trimmed only past kTrimThreshold of free memory and grows by
+// kTopPad at a time.
+constexpr int kMmapThreshold = 32 << 20;
+constexpr int kTrimThreshold = 1 << 30;
+constexpr int kTopPad = 256 << 20;
+
 void keep_freed_memory() {
 #ifdef __GLIBC__
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  mallopt(M_TOP_PAD, 256 << 20);
+  mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
+  mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
+  mallopt(M_TOP_PAD, kTopPad);
 #endif
 }
 

@@ -6,12 +6,23 @@
 #include <cstdlib>
 
 namespace volmesh::plot {
+namespace {
+
+// The axis extends beyond the data by kMarginShare of its span in log10 on both sides, and to
+// at least kLeastSpan decades in all (a single value).
+constexpr double kMarginShare = 0.05;
+constexpr double kLeastSpan = 0.5;
+// Tick values in [kPlainFrom, kPlainTo) are labelled as plain numbers ("0.05", "20"), the
+// others in exponent form ("1e-05").
+constexpr double kPlainFrom = 1e-3, kPlainTo = 1e4;
+
+}  // namespace
 
 LogAxis LogAxis::covering(double min, double max, int pixel_lo, int pixel_hi) {
   LogAxis a;
   a.lo = std::log10(min);
   a.hi = std::log10(max);
-  const double margin = std::max(0.05 * (a.hi - a.lo), 0.25 - 0.5 * (a.hi - a.lo));
+  const double margin = std::max(kMarginShare * (a.hi - a.lo), 0.5 * (kLeastSpan - (a.hi - a.lo)));
   a.lo -= margin;
   a.hi += margin;
   a.pixel_lo = pixel_lo;
@@ -45,7 +56,7 @@ std::vector<Tick> LogAxis::ticks(int min_label_spacing) const {
 
 std::string tick_label(double value) {
   char buffer[32];
-  if (value >= 1e-3 && value < 1e4)
+  if (value >= kPlainFrom && value < kPlainTo)
     std::snprintf(buffer, sizeof buffer, "%.4g", value);
   else
     std::snprintf(buffer, sizeof buffer, "%.0e", value);
