@@ -16,7 +16,7 @@ namespace {
 // down to this fraction of it, halving, where the line passes by a cell edge.
 constexpr double kLeastSlideMargin = 0.25;
 // The free direction of the normals runs along the link between two face interface points
-// when the cosine of their angle exceeds this (within about 25 degrees).
+// when the cosine of their angle exceeds this (within about 26 degrees).
 constexpr double kAlongLinkCosine = 0.9;
 
 // Whether the normals at these edge points show a sharp edge.
