@@ -62,7 +62,7 @@ TEST(CliMesh, BaseLevelAtTheLevelIsAUniformGrid) {
 
 TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   const fs::path dir = test::scratch_dir("mesh-threads");
-  // layers6: many vertex moves (run in waves on both cores) and merges (scored on both).
+  // layers6: many vertex moves (made in parallel waves) and merges (scored in parallel).
   for (const std::string run : {"staircase builtin:primitives --level 4",
                                 "cutcell builtin:primitives --level 4",
                                 "cutcell builtin:layers6 --level 4"}) {
@@ -123,11 +123,11 @@ TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
   EXPECT_NE(report.find("Mesh OK."), std::string::npos) << report;
 }
 
-// A ball, two real surfaces from libcgal-demo and the seven regions of builtin:primitives
-// (level 4 failed on three skewed faces until the edges crossed twice kept both crossings).
-// layers6 still fails checkMesh at levels 3 and 5, on one inverted face pyramid and one
-// skewed face each where its pinched-out layer thins to nothing; level 4 is held to none in
-// test_cutcell_quality.
+// A ball, two real surfaces from libcgal-demo and the seven regions of builtin:primitives,
+// whose junction lines pass beside leaf edges crossed twice (both crossings kept), at levels
+// 3 to 5. builtin:layers6 is not among them: at levels 3 and 5 it keeps one inverted face
+// pyramid and one skewed face each where its pinched-out layer thins to nothing (a known
+// limit, docs/methods.md); level 4 is held to none in test_cutcell_quality.
 TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   const std::string meshes = std::string(VOLMESH_CGAL_DATA) + "/meshes/";
   const std::vector<std::pair<std::string, std::string>> cases{
@@ -151,8 +151,8 @@ int count_after(const std::string& report, const std::string& label) {
   return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
 }
 
-// `volmesh check` counts the faces that make checkMesh fail as checkMesh does: on
-// builtin:layers6 at level 3, which still has one.
+// `volmesh check` counts the faces that make checkMesh fail as checkMesh does, on a case that
+// has such faces: builtin:layers6 at level 3.
 TEST(CliMesh, CheckCountsTheFacesCheckMeshRejects) {
   const std::string report = check_mesh_report("cutcell builtin:layers6 --level 3", "layers6");
   const fs::path out = foam_case("layers6");

@@ -87,7 +87,7 @@ TEST_F(CliPartition, PvtuWithStatisticsOpensInMeshio) {
   EXPECT_EQ(parts["point_data"], nlohmann::json({"GlobalPointIds"}));
 }
 
-// The case on real cut cells (polyhedra with hanging and cut faces, seven regions):
+// Real cut cells (polyhedra with hanging and cut faces, seven regions), in contiguous parts:
 // meshio reads every piece, with each cell's region where the unpartitioned mesh has it and
 // the same total volume (meshio fans non-planar faces from a corner, volmesh splits them
 // around their centre: up to 1e-5 apart; an average cell is 1.5e-4 of the volume).

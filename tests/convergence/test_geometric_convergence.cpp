@@ -1,8 +1,9 @@
-// The geometric claims (DESIGN.md §5) on real runs of the meshers, at low levels (the full
-// study is validation/geometry/run.sh): cut cells converge to second order in volume and in the
-// two-sided Hausdorff distance to the TRUE surface; staircase and midpoint M3C to first order.
-// If cutting degraded to first order (crossings snapped, interface points at midpoints), the
-// cut-cell slopes here would fall to about 1 and these tests would fail.
+// The geometric claims (docs/verification.md, "Geometric convergence") on real runs of the
+// meshers, at low levels (the full study is validation/geometry/run.sh): cut cells converge to
+// second order in volume and in the two-sided Hausdorff distance to the TRUE surface; staircase
+// and midpoint M3C to first order. If cutting degraded to first order (crossings snapped,
+// interface points at midpoints), the cut-cell slopes here would fall to about 1 and these
+// tests would fail.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -186,9 +187,11 @@ TEST(GeometricConvergence, PrimitivesJunctionsAndRimsStayOnTheSurfaces) {
 }
 
 // At level 7 junction lines pass beside deepest leaf edges crossed twice: crossings are kept
-// apart down to 0.05 of the edge, and a face's junction point next to a crossing that stands
-// for two is that crossing (not the meeting point of nearly parallel tangent lines). Merging
-// crossings closer than 0.2 of the edge would put vertices 0.037 h off the surfaces.
+// apart down to the split gap (0.05 of the edge), and a face's junction point next to a
+// crossing that stands for two is that crossing (not the meeting point of nearly parallel
+// tangent lines). Every vertex of a boundary or interface face then lies within 0.02 h of
+// the true surfaces; a crossing standing for two lies off either by up to the gap, so a
+// larger gap moves the vertices beside such edges farther off.
 TEST(GeometricConvergence, PrimitivesJunctionLinesKeepCloseCrossings) {
   const std::unique_ptr<Domain> domain = make_builtin_domain("primitives");
   const auto& primitives = dynamic_cast<const AnalyticDomain&>(*domain);

@@ -19,8 +19,8 @@ namespace {
 // one cell, so within a ball of radius sqrt(3) h / 2 (the cell's circumradius): each lies in
 // the sphere's cap of that radius, at most 3 h^2 / (8 R) below the sphere. The volume is then
 // short by at most the area times that, a relative error of 3 (3 h^2 / (8 R)) / R = 9/8 h^2
-// for the unit ball. Measured: 0.23-0.30 h^2 at levels 2-5; the first-order midpoint
-// variant is at 1.5 h^2 at level 4.
+// for the unit ball. The meshes stay at 0.23-0.30 h^2 at levels 2-5, well inside; the
+// first-order midpoint variant, at 1.5 h^2 at level 4, would fail.
 TEST(CutcellMesh, BallIsValidWithASecondOrderVolumeError) {
   const auto domain = make_builtin_domain("ball");
   const double exact = 4.0 / 3.0 * M_PI;
@@ -39,10 +39,9 @@ TEST(CutcellMesh, BallIsValidWithASecondOrderVolumeError) {
 
 // builtin:layers6 fills its unit box, which is then the octree's root: the box's faces are
 // the root's, and grid vertices on them stay on them when moved off the layers. So the
-// regions fill the box to rounding at every level (no gap, no overlap). With the box inside
-// the root (margin 0.05) its faces cut cells, and the junctions of the layers with its
-// edges left the regions at 1 + 1.2e-7 at level 6; with the root on the box but vertices
-// moved off it, at 1 - 6.4e-4 at level 3. (Level 6 takes 90 s under the sanitizers.)
+// regions fill the box to rounding at every level (no gap, no overlap), which neither a box
+// inside the root (its faces would cut cells) nor vertices moved off the box would give.
+// Levels 3-5: level 6 takes 90 s under the sanitizers.
 TEST(CutcellMesh, Layers6RegionsFillTheUnitBox) {
   const auto domain = make_builtin_domain("layers6");
   for (int level = 3; level <= 5; ++level) {
@@ -62,13 +61,13 @@ double margin_for_offset(int level, double offset) {
 }
 
 // Faces passing a few hundredths of a cell from the grid planes: every grid vertex along them
-// is moved off. Those next to the box's edges and corners must go out across the faces near
-// them, and the edge and corner points must stay on the box (not be pushed a margin into the
-// faces and cells); before, 5% of the cube was cut off along its edges. With the faces just
-// inside the grid vertices (negative offsets), a vertex by a corner went out across all three
-// faces, warping its leaves' faces across the third, and the corner lay 1e-4 off (volume
-// 1 + 3.2e-4, 1 - 1.1e-4, 1 - 1.5e-4); it now goes out across two, and the corner is the fan
-// centre of its cell instead of snapping to the face point on its vertical edge.
+// is moved off. Those next to the box's edges and corners go out across the faces near them,
+// and the edge and corner points stay on the box (pushed a margin into the faces and cells,
+// they would cut the cube's edges off). With the faces just inside the grid vertices
+// (negative offsets), a vertex by a corner goes out across two of the three faces (across
+// all three it would warp its leaves' faces across the third and move the corner), and the
+// corner is the fan centre of its cell, not the face point on its vertical edge: the volume
+// is the cube's to rounding.
 TEST(CutcellMesh, BoxFacesNearGridPlanesKeepEdgesAndCorners) {
   const auto box = make_builtin_domain("box");
   for (const double offset : {0.01, 0.02, 0.03, -0.05, -0.07, -0.09}) {
@@ -81,7 +80,7 @@ TEST(CutcellMesh, BoxFacesNearGridPlanesKeepEdgesAndCorners) {
     EXPECT_GT(stats.moved_vertices, 100) << offset;
     EXPECT_NEAR(report.total_volume, 1.0, 1e-10) << offset;
   }
-  // layers6 there: merged faces once left a cell of three faces.
+  // layers6 there: the merged faces leave every cell valid (none of three faces).
   CutcellOptions options;
   options.octree.level = 4;
   options.octree.margin = margin_for_offset(4, 0.02);
@@ -122,9 +121,9 @@ TriSurface l_shaped_prism(double c) {
 
 // The root is centred on the bounding box, so the L's inner faces lie on grid planes and its
 // inner edge on a grid line. Where that edge meets the top and bottom faces, the corner
-// feature point is the edge point on the grid line; a fan around a new point there left two
-// triangles of no area (levels 4 and 7 failed, as did libcgal-demo's corner.off at level 5).
-// The volume converges at second order: the cells at the inner edge are L-shaped.
+// feature point is the edge point on the grid line (a fan around a new point there would
+// leave two triangles of no area). The volume converges at second order: the cells at the
+// inner edge are L-shaped.
 TEST(CutcellMesh, LShapeWithItsInnerEdgeOnAGridLine) {
   const SurfaceDomain domain({{l_shaped_prism(0.5), 0, "L"}});
   double bound = 1e-2;
@@ -140,8 +139,8 @@ TEST(CutcellMesh, LShapeWithItsInnerEdgeOnAGridLine) {
 
 // The L's inner edge inside cells: the piece wrapping it is L-shaped, its centre beyond its
 // own faces. It is split in two by the plane of one of the edge's faces rather than having
-// its faces joined across the edge into bent polygons, which cut the edge off (volume
-// 1 + 4.9e-4 at level 3, 1 + 1.6e-4 at level 5, before); the planar L is now exact.
+// its faces joined across the edge into bent polygons, which would cut the edge off: the
+// planar L comes out exact.
 TEST(CutcellMesh, LShapeSplitsItsPiecesAtTheInnerEdge) {
   const SurfaceDomain domain({{l_shaped_prism(0.37), 0, "L"}});
   const double exact = 1.0 - 0.63 * 0.63;
@@ -159,10 +158,10 @@ TEST(CutcellMesh, LShapeSplitsItsPiecesAtTheInnerEdge) {
 
 // A block with a 60° ridge along x, narrower than a level-4 cell and lower than one, placed
 // between the grid lines (margin 0: the root is the unit cube from z = -0.265): no cell edge
-// crosses the ridge, whose cells see only the block's top, and their fans cut it off (volume
-// error -7.8e-4; the ridge is 1.2e-3 of the volume). A crossing through their centre facing
-// elsewhere than their edge points splits them, and the ridge is kept (3.8e-4; 7.6e-5 at
-// level 5, where the edges see it).
+// crosses the ridge, whose cells see only the block's top, and their fans would cut it off
+// (the ridge is 1.2e-3 of the volume). A crossing through their centre facing elsewhere than
+// their edge points splits them down to level 5, where the edges see the ridge: the volume
+// error stays below half the ridge's share (3.8e-4 at this level).
 TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
   const double top = 0.44, apex = 0.47, half_width = (apex - top) / std::sqrt(3.0), centre = 8.5 / 16.0;
   const std::array<std::array<double, 2>, 7> profile{{{0, 0}, {1, 0}, {1, top}, {centre + half_width, top},
@@ -188,7 +187,7 @@ TEST(CutcellMesh, ARidgeHiddenInsideCellsIsRefinedTo) {
 // with its corners in a line up to rounding: no normal to orient it, area 1e-20 where its
 // sides are 0.01 long. The checker rejects such faces (area within 1e-12 of the longest side
 // squared), and a cell's triangulations count one as inverted, so another is chosen.
-// icosahedron.off had one at level 6; 16 of the 249 meshes of libcgal-demo at levels 4-6 had one.
+// icosahedron.off at level 6 has such a cell.
 TEST(CutcellMesh, NoBoundaryTriangleHasItsCornersInALine) {
   auto surface = surface_test::cgal_mesh("icosahedron.off");
   if (!surface) GTEST_SKIP() << "libcgal-demo is not installed";

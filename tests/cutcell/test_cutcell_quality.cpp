@@ -65,19 +65,19 @@ TEST(CutcellQuality, BallPassesCheckMeshLimits) {
   }
 }
 
-// Multi-material junctions (a plane through a sphere through a cylinder): before the vertex
-// moves counted the crossings an edge already had and thin pieces were merged, level 4 had
-// some 120 faces checkMesh rejected (skewness up to 38). The smallest cell (5.2e-5 h^3) is
-// the tip of a wedge between two surfaces crossing at a junction line, cut off where an
-// edge keeps both of its crossings 0.05 of it apart: merged, its face on the other surface
-// would be too skewed for checkMesh.
+// Multi-material junctions (a plane through a sphere through a cylinder) at level 4: with the
+// vertex moves counting the crossings an edge already has, both crossings of an edge crossed
+// twice kept and thin pieces merged, checkMesh rejects no face. The smallest cell (5.2e-5 h^3,
+// hence the bound) is the tip of a wedge between two surfaces crossing at a junction line,
+// cut off where an edge keeps both of its crossings 0.05 of it apart: merged, its face on
+// the other surface would be too skewed for checkMesh.
 TEST(CutcellQuality, PrimitivesJunctionsLeaveNoThinCellsAndFewRejectedFaces) {
   CutcellStats stats;
   const PolyMesh mesh = mesh_of("primitives", 4, stats);
   EXPECT_TRUE(check_validity(mesh).valid());
   EXPECT_GE(stats.min_cell_volume_ratio, 4e-5);
   EXPECT_EQ(stats.unresolved_vertices, 0);
-  // Until edges crossed twice kept both crossings, checkMesh flagged three skewed faces here.
+  // Edges beside the junctions are crossed twice at the deepest level and keep both crossings.
   EXPECT_GT(stats.split_edges, 0);
   const Rejected r = rejected_faces(mesh);
   EXPECT_EQ(r.total(), 0) << r.skewed << " skewed, " << r.non_orthogonal << " non-orthogonal, "
@@ -89,8 +89,8 @@ TEST(CutcellQuality, PrimitivesJunctionsLeaveNoThinCellsAndFewRejectedFaces) {
 
 // Where the pinched-out layer meets the fault, a cell of one region and one of another are
 // bent into each other, each one's centre behind a face they share, and neither split alone
-// helps: split together, level 4 passes (it had three faces beyond the limits). One face
-// there has a centre on its plane to within rounding, which checkMesh (and bad_faces) accept.
+// helps: split together, level 4 passes. One face there has a centre on its plane to within
+// rounding, which checkMesh (and bad_faces) accept.
 TEST(CutcellQuality, Layers6Level4PassesCheckMeshLimits) {
   CutcellStats stats;
   const PolyMesh mesh = mesh_of("layers6", 4, stats);
@@ -99,9 +99,9 @@ TEST(CutcellQuality, Layers6Level4PassesCheckMeshLimits) {
   EXPECT_EQ(stats.bad_faces, 0);
 }
 
-// Where layers end on the box, the splitter's last resort for a skewed face and the merging's
-// face joins used to make polygons folded over themselves (levels 4 and 5, near the box face
-// x = 0), and the polyhedral FEM refused the mesh. A merged polygon is now kept only when
+// Where layers end on the box (near its face x = 0 at levels 4 and 5), the splitter's last
+// resort for a skewed face and the merging's face joins can make polygons folded over
+// themselves, which the polyhedral FEM refuses: a merged polygon is kept only when
 // split_polygon, the FEM's own verdict, finds it unfolded.
 TEST(CutcellQuality, Layers6HasNoFoldedFaces) {
   for (const auto& [level, base] : {std::pair{4, 3}, std::pair{4, 4}, std::pair{5, 3}}) {

@@ -181,7 +181,8 @@ TEST(FaceContour, PinchedCrossingIsTheJunction) {
 
 // A CAD part's sharp edge (fandisk's) running along a side, just inside or just outside it
 // (the vertex moves put it there): the feature point is kept on the kept polygon, pulled just
-// inside the face when it lies beyond. Refused, the chord cut the edge off by half a cell.
+// inside the face when it lies beyond. Refused, the chord would cut the edge off by half a
+// cell.
 TEST(FaceContour, SharpEdgeAlongASideKeepsItsFeaturePoint) {
   for (const double offset : {5e-4, -5e-4}) {
     // Line b through (0.2, offset) with slope 0.05 (region 1 above), line a perpendicular.
@@ -201,7 +202,7 @@ TEST(FaceContour, SharpEdgeAlongASideKeepsItsFeaturePoint) {
 
 // A concave sharp edge crossing the face 0.014 of the side from the left side, whose lower
 // part stays in the kept region (fandisk at level 6): its feature point is kept, a thin spike
-// of the kept polygon beside it; the chord from side to side cut the edge off.
+// of the kept polygon beside it; the chord from side to side would cut the edge off.
 TEST(FaceContour, SharpEdgeBesideAKeptSideKeepsItsFeaturePoint) {
   const Vec3 left(0.0, 0.24, 0.0), feature(0.0136, 0.1695, 0.0), right(1.0, 0.1716, 0.0);
   const Vec3 a = feature - left, b = right - feature;
@@ -354,7 +355,8 @@ TEST(FaceContour, ARoundedBendPutsTheFeaturePointOnTheSurface) {
   sq.side[3] = {{Vec3(0, r, 0), Vec3(0, -1, 0)}};
   const FaceInput f = make_face(sq);
   FaceContourOptions options;
-  // The circle's crossing of x -+ d nearest x whose outward normal lies within 25 degrees of d.
+  // The circle's crossing of x -+ d nearest x whose outward normal lies within about 26
+  // degrees of d (kSameSurfaceCosine).
   options.surface_near = [r](const Vec3& x, const Vec3& d) -> std::optional<std::pair<Vec3, Vec3>> {
     const Vec3 a = x - d, b = x + d, ab = b - a;
     const double qa = ab.squaredNorm(), qb = 2.0 * a.dot(ab), qc = a.squaredNorm() - r * r;

@@ -92,7 +92,7 @@ TEST(Partition, EveryPartIsNonEmptyUpToOneCellEach) {
       }
 }
 
-// The target, on 46^3 = 97,336 hexes: imbalance <= 1.03 for K = 2 .. 64.
+// The balance users accept, on 46^3 = 97,336 hexes: imbalance <= 1.03 for K = 2 .. 64.
 TEST(Partition, BalancedOnAHundredThousandCells) {
   const PolyMesh mesh = hex_grid(46, 46, 46);
   const DualGraph graph = build_dual_graph(mesh);
