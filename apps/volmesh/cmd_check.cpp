@@ -155,6 +155,11 @@ Command add_check_command(CLI::App& root) {
                   "write the mesh with one cell array per quality metric (.vtu)");
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
+  app->footer(R"(Examples:
+  volmesh check mesh.vtu                             validity and quality
+  volmesh check case.foam --json                     the same as one JSON object on stdout
+  volmesh check mesh.vtu --surface part.stl          + volume error and Hausdorff distance
+  volmesh check ball.vtu --surface builtin:ball      against the true sphere)");
   return {app, [opt] { return run_check(*opt); }};
 }
 

@@ -66,6 +66,10 @@ Command add_convert_command(CLI::App& root) {
   app->add_option("--decompose", opt->decompose,
                   "split every cell into tetrahedra, conforming (for .msh .mesh .inp)")
       ->check(CLI::IsMember({"tets"}));
+  app->footer(R"(Examples:
+  volmesh convert mesh.msh case.foam                 Gmsh 4.1 to an OpenFOAM case directory
+  volmesh convert cut.vtu cut.inp --decompose tets   polyhedra to Abaqus as conforming tets
+  volmesh convert part.stl part.off                  surfaces convert too)");
   return {app, [opt] { return run_convert(*opt); }};
 }
 

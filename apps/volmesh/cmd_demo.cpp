@@ -238,6 +238,7 @@ Command add_demo_command(CLI::App& root) {
   app->add_option("--study-levels", opt->study_levels, "levels A..B of the convergence study")
       ->capture_default_str();
   add_quiet_flag(*app, opt->quiet);
+  app->footer(R"(Example: volmesh demo -o demo-output)");
   return {app, [opt] { return run_demo(*opt); }};
 }
 

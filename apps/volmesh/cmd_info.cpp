@@ -66,6 +66,9 @@ Command add_info_command(CLI::App& root) {
   app->add_option("input", opt->input, "mesh (.vtu .msh) or surface (.stl .off .obj .ply)")
       ->required();
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
+  app->footer(R"(Examples:
+  volmesh info elephant.off                          counts, bounding box, closedness, volume
+  volmesh info mesh.vtu --json)");
   return {app, [opt] { return run_info(*opt); }};
 }
 

@@ -16,6 +16,7 @@
 #include "reports.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
+#include "volmesh/geometry/tet_decomposition.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/meshers/registry.hpp"
@@ -31,14 +32,16 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The share of the progress bar the mesher's own stages take; checking and writing follow.
-constexpr double kMeshingShare = 0.9;
+// The share of the progress bar the mesher's own stages take; checking, the decomposition
+// into tetrahedra when asked, and writing follow.
+constexpr double kMeshingShare = 0.9, kDecomposingAt = 0.93, kWritingAt = 0.96;
 
 struct MeshOptions {
   std::string method, domain, output;
   int level = 5;
   std::optional<double> size;
   meshers::MethodOptions given;
+  std::string decompose;  // "" or "tets"
   bool json = false, quiet = false;
   int threads = 0;
 };
@@ -86,8 +89,15 @@ int run_mesh(const MeshOptions& opt) {
                              (validity.problems.empty() ? std::string("see volmesh check")
                                                         : validity.problems.front()) +
                              "); nothing written");
-  progress("writing " + opt.output, (1.0 + kMeshingShare) / 2);
-  write_mesh(result.mesh, opt.output);
+  // The element formats take tetrahedra and hexahedra: --decompose tets writes any mesh to
+  // them as conforming tetrahedra. The summary stays the mesher's own.
+  std::optional<PolyMesh> tets;
+  if (opt.decompose == "tets") {
+    progress("decomposing into tetrahedra", kDecomposingAt);
+    tets = decompose_into_tets(result.mesh, opt.output);
+  }
+  progress("writing " + opt.output, kWritingAt);
+  write_mesh(tets ? *tets : result.mesh, opt.output);
   progress.clear();
 
   const PolyMesh& mesh = result.mesh;
@@ -107,6 +117,7 @@ int run_mesh(const MeshOptions& opt) {
     if (request.level) j["level"] = *request.level;
     if (request.size) j["size"] = *request.size;
     j.update(result.summary);
+    if (tets) j["decomposed"] = {{"tetrahedra", tets->num_cells()}, {"points", tets->num_points()}};
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << opt.output << ": " << opt.method << " mesh of " << request.domain_name;
@@ -114,7 +125,9 @@ int run_mesh(const MeshOptions& opt) {
     if (request.size) std::cout << " at size " << *request.size;
     std::cout << ": " << mesh.num_cells() << " cells, " << mesh.num_faces() << " faces, "
               << mesh.num_points() << " vertices, volume " << validity.total_volume << ", "
-              << mesh_seconds << " s\n";
+              << mesh_seconds << " s";
+    if (tets) std::cout << "; written as " << tets->num_cells() << " tetrahedra";
+    std::cout << "\n";
   }
   return 0;
 }
@@ -147,6 +160,10 @@ Command add_mesh_command(CLI::App& root) {
            "--size", [opt](const double& h) { opt->size = h; }, "target edge length")
         ->check(CLI::PositiveNumber);
   add_mesher_options(*app, opt->given, true);
+  app->add_option("--decompose", opt->decompose,
+                  "write every cell as conforming tetrahedra (for .msh .mesh .inp, which take "
+                  "tetrahedra and hexahedra only)")
+      ->check(CLI::IsMember({"tets"}));
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   app->add_option("--threads", opt->threads, "at most this many threads (default: all cores)")
@@ -157,7 +174,8 @@ Examples:
   volmesh mesh cutcell fandisk.off --level 6 -o fandisk.foam/
   volmesh mesh staircase builtin:ball --level 6 -o ball.vtu
   volmesh mesh staircase part.stl --level 7 -o part.foam/ --json
-  volmesh mesh grid builtin:box --level 4 --tets -o box.msh)");
+  volmesh mesh grid builtin:box --level 4 --tets -o box.msh
+  volmesh mesh cutcell builtin:primitives --level 4 -o primitives.msh --decompose tets)");
   return {app, [opt] { return run_mesh(*opt); }};
 }
 

@@ -41,17 +41,19 @@ int main(int argc, char** argv) {
                "), checking, partitioning, Poisson and elasticity solves, export"};
   app.set_version_flag("--version", std::string("volmesh ") + VOLMESH_VERSION);
   app.require_subcommand(1);
+  std::vector<cli::Command> commands{
+      cli::add_info_command(app),      cli::add_convert_command(app), cli::add_check_command(app),
+      cli::add_demo_command(app),      cli::add_sdf_command(app),     cli::add_mesh_command(app),
+      cli::add_partition_command(app), cli::add_solve_command(app),   cli::add_study_command(app)};
+  // After the subcommands, which would otherwise inherit it.
   app.footer(R"(Examples:
-  volmesh info elephant.off                 counts, bounding box, closedness, volume
-  volmesh check mesh.vtu --surface part.stl validity, quality, distance to the surface
-  volmesh check mesh.vtu --json             the same as one JSON object on stdout
-  volmesh convert mesh.msh case.foam        Gmsh 4.1 to an OpenFOAM case directory
-  volmesh convert part.stl part.off         surfaces convert too)");
-
-  std::vector<cli::Command> commands{cli::add_info_command(app), cli::add_convert_command(app),
-                                     cli::add_check_command(app), cli::add_demo_command(app),
-                                     cli::add_sdf_command(app), cli::add_mesh_command(app), cli::add_partition_command(app), cli::add_solve_command(app),
-                                     cli::add_study_command(app)};
+  volmesh demo                                       the main job on built-in data
+  volmesh mesh cutcell builtin:primitives --level 5 -o primitives.vtu
+  volmesh check primitives.vtu --surface builtin:primitives
+  volmesh convert primitives.vtu primitives.msh --decompose tets
+  volmesh solve poisson --problem sine --method cutcell --level 4 -o u.vtu
+  volmesh study convergence --problem sine --methods staircase,cutcell --levels 2..5 -o study
+Each subcommand's --help has its own examples.)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -31,7 +31,7 @@ std::vector<CellCorners> classify_elements(const PolyMesh& mesh, const CellFaces
     if (cells[c].shape == CellShape::Polyhedron)
       throw InputError(file.string() + ": cell " + std::to_string(c) + " is a polyhedron with " +
                        std::to_string(cell_faces.of(c).size()) + " faces; " + std::string(format) +
-                       " output takes tetrahedra and hexahedra only (convert with --decompose "
+                       " output takes tetrahedra and hexahedra only (write it with --decompose "
                        "tets)");
   }
   return cells;

@@ -20,7 +20,7 @@ void write_text_file(const std::filesystem::path& path, std::string_view text);
 // Shape and VTK-ordered corners of every cell. Throws InputError naming the first cell that is
 // neither a tetrahedron nor a hexahedron, e.g.
 //   "out.mesh: cell 12 is a polyhedron with 9 faces; MEDIT output takes tetrahedra and
-//    hexahedra only (convert with --decompose tets)".
+//    hexahedra only (write it with --decompose tets)".
 std::vector<CellCorners> classify_elements(const PolyMesh& mesh, const CellFaces& cell_faces,
                                            const std::filesystem::path& file,
                                            std::string_view format);

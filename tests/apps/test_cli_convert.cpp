@@ -146,5 +146,35 @@ TEST(CliConvert, PolyhedraNeedTheOptionAndStarShapedCells) {
             2);
 }
 
+// `volmesh mesh --decompose tets` writes the cut cells straight to an element format: valid
+// tetrahedra with the polyhedral mesh's region volumes (the summary stays the mesher's own).
+TEST(CliMeshDecompose, CutCellsGoStraightToAnElementFormat) {
+  const fs::path dir = test::scratch_dir("mesh-decompose");
+  const fs::path msh = dir / "prim.msh";
+  const auto r = run_volmesh("mesh cutcell builtin:primitives --level " + std::to_string(kLevel) +
+                                 " -o " + msh.string() + " --decompose tets --json",
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(r.out);
+  const PolyMesh tets = read_mesh(msh);
+  const ValidityReport back = check_validity(tets);
+  EXPECT_TRUE(back.valid()) << (back.problems.empty() ? "" : back.problems.front());
+  EXPECT_EQ(summary["decomposed"]["tetrahedra"].get<Index>(), tets.num_cells());
+  EXPECT_GT(tets.num_cells(), summary["cells"].get<Index>());
+  const double total = summary["validity"]["total_volume"].get<double>();
+  EXPECT_NEAR(back.total_volume, total, kRelativeVolume * total);
+  for (const auto& [region, entry] : summary["regions"].items())
+    EXPECT_NEAR(back.region_volume.at(std::stoi(region)), entry["volume"].get<double>(),
+                kRelativeVolume * total)
+        << "region " << region;
+
+  const fs::path inp = dir / "prim.inp";
+  const auto refused =
+      run_volmesh("mesh cutcell builtin:primitives --level 2 -o " + inp.string(), dir);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("--decompose tets"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(inp));
+}
+
 }  // namespace
 }  // namespace volmesh

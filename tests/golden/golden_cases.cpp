@@ -1,6 +1,7 @@
 #include "golden_cases.hpp"
 
 #include <cstdint>
+#include <utility>
 
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/fem/fem.hpp"
@@ -23,17 +24,22 @@ const std::vector<GoldenCase>& golden_cases() {
       {"staircase-primitives-4", "staircase", "builtin:primitives", 4, {}, ""},
       {"staircase-layers6-4", "staircase", "builtin:layers6", 4, {}, ""},
       {"staircase-tetra-5", "staircase", "data:surfaces/tetra_ascii.ply", 5, {}, ""},
+      {"cutcell-elephant-4", "cutcell", "cgal:meshes/elephant.off", 4, {}, ""},
+      {"staircase-elephant-5", "staircase", "cgal:meshes/elephant.off", 5, {}, ""},
       {"cutcell-ball-3-sine", "cutcell", "builtin:ball", 3, {}, "sine"},
       {"staircase-ball-4-sine", "staircase", "builtin:ball", 4, {}, "sine"},
   };
   return cases;
 }
 
-std::unique_ptr<Domain> open_case_domain(const GoldenCase& c) {
-  const std::string data = "data:";
-  if (c.domain.starts_with(data)) return open_domain(VOLMESH_TEST_DATA "/" + c.domain.substr(data.size()));
-  return open_domain(c.domain);
+std::string case_domain_spec(const GoldenCase& c) {
+  for (const auto& [prefix, dir] : {std::pair<std::string, std::string>{"data:", VOLMESH_TEST_DATA},
+                                    {"cgal:", VOLMESH_CGAL_DATA}})
+    if (c.domain.starts_with(prefix)) return dir + "/" + c.domain.substr(prefix.size());
+  return c.domain;
 }
+
+std::unique_ptr<Domain> open_case_domain(const GoldenCase& c) { return open_domain(case_domain_spec(c)); }
 
 PolyMesh mesh_case(const GoldenCase& c, const Domain& domain) {
   meshers::MeshRequest request;

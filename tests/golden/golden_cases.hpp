@@ -16,8 +16,9 @@ namespace volmesh::golden {
 struct GoldenCase {
   std::string name;    // the stored summary's file name, without .json
   std::string method;  // a mesher of the registry (volmesh/meshers/registry.hpp)
-  // open_domain's argument; "data:" stands for the tests' data directory (tests/data), so
-  // that the stored summary names no absolute path.
+  // open_domain's argument; "data:" stands for the tests' data directory (tests/data) and
+  // "cgal:" for libcgal-demo's unpacked data (make test installs it), so that the stored
+  // summary names no absolute path.
   std::string domain;
   int level;
   meshers::MethodOptions options;  // by their command-line names, without "--"
@@ -27,7 +28,8 @@ struct GoldenCase {
 // Every case, in one table.
 const std::vector<GoldenCase>& golden_cases();
 
-// The case's domain ("data:" resolved).
+// The case's domain argument with "data:" and "cgal:" resolved, and the domain it opens.
+std::string case_domain_spec(const GoldenCase& c);
 std::unique_ptr<Domain> open_case_domain(const GoldenCase& c);
 
 // The case's mesh, from the mesher registry as `volmesh mesh` meshes. Throws InputError for

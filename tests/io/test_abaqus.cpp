@@ -160,7 +160,7 @@ TEST(AbaqusWriter, RefusesPolyhedraNamingTheFirst) {
     EXPECT_EQ(std::string(e.what()),
               path.string() +
                   ": cell 8 is a polyhedron with 9 faces; Abaqus output takes tetrahedra and "
-                  "hexahedra only (convert with --decompose tets)");
+                  "hexahedra only (write it with --decompose tets)");
   }
   EXPECT_TRUE(fs::is_empty(path.parent_path()));
 }

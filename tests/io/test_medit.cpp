@@ -80,7 +80,7 @@ TEST(MeditWriter, RefusesPolyhedraNamingTheFirstAndLeavesNoFile) {
     EXPECT_EQ(std::string(e.what()),
               path.string() +
                   ": cell 8 is a polyhedron with 9 faces; MEDIT output takes tetrahedra and "
-                  "hexahedra only (convert with --decompose tets)");
+                  "hexahedra only (write it with --decompose tets)");
   }
   EXPECT_TRUE(fs::is_empty(path.parent_path()));
 }

@@ -139,7 +139,7 @@ TEST(Msh, PolyhedraAreRefused) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), path.string() +
                                          ": cell 8 is a polyhedron with 9 faces; MSH 4.1 output "
-                                         "takes tetrahedra and hexahedra only (convert with "
+                                         "takes tetrahedra and hexahedra only (write it with "
                                          "--decompose tets)");
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / ""));
