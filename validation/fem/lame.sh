@@ -2,7 +2,7 @@
 # The Lamé thick-walled sphere under internal pressure on cut cells: builtin:thick-sphere
 # (radii 0.5 and 1), E = 1, ν = 0.3, pressure 1 on the inner surface (traction −p n with
 # the true normal, at points mapped onto the true sphere), the exact displacement on the
-# outer one. The figure: displacement L2 slope ≥ 1.8 over four levels.
+# outer one. The target: displacement L2 slope ≥ 1.8 over four levels.
 #
 # Why levels 4..7 and not 3..6: the inner sphere spans 1.8 cells of its radius at level 3
 # and 3.6 at level 4, where the solution's relative curvature |∇²u|/|∇u| ≈ 4/r = 8 makes

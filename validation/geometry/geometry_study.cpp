@@ -1,4 +1,4 @@
-// Geometric convergence of one mesher on one domain (DESIGN.md §5): per level, the
+// Geometric convergence of one mesher on one domain (docs/verification.md): per level, the
 // mesh's region volumes against the exact ones and, for analytic domains, the two-sided
 // Hausdorff distance between its boundaries/interfaces and the true surfaces, overall and
 // within a band around the sharp edges. One JSON object per level on stdout.

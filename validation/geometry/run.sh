@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Geometric convergence study (issue 4, DESIGN.md §5), one command, Release. Real runs of the
+# Geometric convergence study (docs/verification.md), one command, Release. Real runs of the
 # meshers — cutcell (MMCMS, exact interface points), midpoint (M3C as published) and
 # staircase — per octree level on
 #   builtin:ball, a torus and an ellipsoid (tests/data/domains): volume error and the

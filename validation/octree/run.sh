@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Octree cut-cell benchmark (issue 4), one command, Release:
+# Octree cut-cell benchmark, one command, Release:
 #   1. the octree paper's Tables 1 (builtin:primitives) and 2 (builtin:layers6): levels 1-3 of
 #      the paper against our --level, with the paper's columns (time, cells, cut cells, faces,
 #      vertices), our time against the paper's (target: >= 15x faster) and the cell-count ratio
@@ -24,12 +24,12 @@ export WM_PROJECT_DIR=${WM_PROJECT_DIR:-/usr/share/openfoam}  # where checkMesh 
 # Paper levels 1, 2, 3 -> our --level. The paper's meshes have 2-4x more uncut cells than the
 # 2:1 balance alone leaves around the interfaces; two cells of each level before the next
 # coarser one (--cells-between-levels 2, the default base level 3) bring every count within
-# 1.25x of the paper's either way (0.81-1.24, session 14).
+# 1.25x of the paper's either way.
 PRIMITIVES_LEVELS="5 6 7"
 LAYERS6_LEVELS="4 5 6"
 CELLS_BETWEEN_LEVELS=2
 SURFACES="elephant fandisk knot1"
-SNAPPY_LEVEL=3          # refinementSurfaces level, as in the issue's measurement
+SNAPPY_LEVEL=3          # refinementSurfaces level, the cell counts compared
 SNAPPY_BACKGROUND=18    # background cells along the longest side: ~126,000 cells on fandisk, knot1
 VOLMESH_LEVEL=7         # the cut-cell level nearest snappyHexMesh's cell count
 HAUSDORFF_LEVELS="6 7 8"  # the distance per level on the same surfaces (7: the run above)

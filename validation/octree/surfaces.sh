@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Robustness sweep (issue 4), one command, Release: `volmesh mesh cutcell` on every OFF surface
+# Robustness sweep, one command, Release: `volmesh mesh cutcell` on every OFF surface
 # of libcgal-demo at levels 4-6 (SURFACES_LEVELS="L ..." for others). Per surface and level:
 # the verdict (a mesh, or the one-line refusal of a bad input: open, non-manifold,
 # inconsistently oriented, degenerate), cells, cells split at reflex edges, faces still beyond

@@ -3,7 +3,7 @@
 #   1. 100^3 = 10^6 hexes, K = 2 .. 64 (powers of two), k-way (volmesh's default) and
 #      recursive bisection: graph and METIS time, edge cut (faces between parts), imbalance,
 #      contiguity; `gmsh -part K` on the same mesh as the peer;
-#   2. the case, a cut-cell mesh of about 10^5 cells (builtin:ball, level 7), every
+#   2. the target case, a cut-cell mesh of about 10^5 cells (builtin:ball, level 7), every
 #      K = 2 .. 64 with k-way: the largest imbalance (target <= 1.03), and the powers of two
 #      with and without --contiguous.
 # With a mesh file argument, case 2 also runs on that mesh (e.g. primitives-l7.vtu).
