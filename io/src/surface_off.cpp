@@ -26,13 +26,13 @@ void read_header_keyword(TextCursor& c, const fs::path& path) {
     if (peek.word() == "BINARY") fail(path, "header: binary OFF is not supported");
     return;
   }
-  std::uint64_t count;
+  std::uint64_t count = 0;
   if (!parse_count(w, count))  // no keyword at all is tolerated: the counts come first
     fail(path, "header: not an OFF file (it starts with '" + std::string(w.substr(0, 20)) + "')");
 }
 
 Index read_count(TextCursor& c, const fs::path& path, const char* what) {
-  std::uint64_t count;
+  std::uint64_t count = 0;
   if (!parse_count(c.word(), count))
     fail(path, "header (" + c.where() + "): expected the number of " + what);
   return checked_count(path, count, what);

@@ -86,7 +86,7 @@ Header read_header(const std::string& data, const fs::path& path) {
       has_format = true;
     } else if (keyword == "element") {
       Element element{std::string(c.word()), 0, {}};
-      std::uint64_t count;
+      std::uint64_t count = 0;
       if (element.name.empty() || !parse_count(c.word(), count))
         error("expected 'element NAME COUNT'");
       element.count = checked_count(path, count, (element.name + " elements").c_str());

@@ -32,7 +32,9 @@ TEST(Conversions, UnitCubeIn6KuhnTetsIsClosedWithVolumeOne) {
   const PolyMesh p = to_poly_mesh(t);
   expect_valid_unit_volume(p);
   for (Index f = 0; f < p.num_faces(); ++f)
-    if (p.is_boundary(f)) EXPECT_NE(p.tag_names[p.face_tag[f]], "boundary");
+    if (p.is_boundary(f)) {
+      EXPECT_NE(p.tag_names[p.face_tag[f]], "boundary");
+    }
 }
 
 TEST(Conversions, UnitCubeIn24TetsIsClosedWithVolumeOne) {

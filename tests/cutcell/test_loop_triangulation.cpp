@@ -43,8 +43,9 @@ void expect_triangulates(const std::vector<Vec3>& p, const std::vector<std::uint
       continue;
     }
     EXPECT_EQ(edges.count({e.second, e.first}), 1u) << e.first << "-" << e.second;
-    if (e.first < static_cast<int>(faces.size()) && e.second < static_cast<int>(faces.size()))
+    if (e.first < static_cast<int>(faces.size()) && e.second < static_cast<int>(faces.size())) {
       EXPECT_EQ(faces[e.first] & faces[e.second], 0) << "diagonal on a face " << e.first << "-" << e.second;
+    }
   }
 }
 

@@ -74,7 +74,9 @@ TEST(MesherRegistry, EveryMethodMeshesItsDefaultDomainAndCountsMatch) {
     EXPECT_GE(r.h, std::ldexp(extent, -kSmallLevel) * (1.0 - 1e-12));
     EXPECT_LE(r.h, std::ldexp(extent, -kSmallLevel) * 1.2);
     for (double f : fractions) EXPECT_TRUE(f >= 0.0 && f <= 1.0) << f;
-    if (m.octree) EXPECT_FALSE(fractions.empty());
+    if (m.octree) {
+      EXPECT_FALSE(fractions.empty());
+    }
   }
 }
 
@@ -141,9 +143,12 @@ TEST(MesherRegistry, OptionDeclarationsAreConsistent) {
       SCOPED_TRACE(m.name + " --" + s.name);
       EXPECT_TRUE(names.insert(s.name).second) << "declared twice";
       EXPECT_FALSE(s.help.empty());
-      if (s.type == OptionSpec::Type::choice) EXPECT_FALSE(s.choices.empty());
-      if (s.type == OptionSpec::Type::integer || s.type == OptionSpec::Type::real)
+      if (s.type == OptionSpec::Type::choice) {
+        EXPECT_FALSE(s.choices.empty());
+      }
+      if (s.type == OptionSpec::Type::integer || s.type == OptionSpec::Type::real) {
         EXPECT_LE(s.min, s.max);
+      }
       EXPECT_NO_THROW(check_option(s, valid_value(s)));
       const auto [first, inserted] = by_name.emplace(s.name, s);
       if (!inserted) {
@@ -153,8 +158,9 @@ TEST(MesherRegistry, OptionDeclarationsAreConsistent) {
         EXPECT_EQ(first->second.choices, s.choices);
       }
     }
-    if (!m.octree)
+    if (!m.octree) {
       for (const OptionSpec& s : octree_options()) EXPECT_FALSE(names.contains(s.name)) << m.name;
+    }
   }
   for (const MesherInfo& m : meshers())
     for (const auto& [name, spec] : by_name) {

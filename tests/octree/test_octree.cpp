@@ -45,9 +45,12 @@ TEST(Octree, LeavesAreInMortonOrderAndFoundByCode) {
     const std::uint32_t last = l.size() - 1;
     EXPECT_EQ(tree.leaf_containing({l.anchor[0] + last, l.anchor[1] + last, l.anchor[2] + last}), i);
     // Same anchor, another level: a child or the parent, not a leaf.
-    if (l.level < kOctreeMaxLevel) EXPECT_EQ(tree.find_leaf(l.anchor, l.level + 1), kNoIndex);
-    if (l.level > 0 && (l.anchor[0] | l.anchor[1] | l.anchor[2]) % (2 * l.size()) == 0)
+    if (l.level < kOctreeMaxLevel) {
+      EXPECT_EQ(tree.find_leaf(l.anchor, l.level + 1), kNoIndex);
+    }
+    if (l.level > 0 && (l.anchor[0] | l.anchor[1] | l.anchor[2]) % (2 * l.size()) == 0) {
       EXPECT_EQ(tree.find_leaf(l.anchor, l.level - 1), kNoIndex);
+    }
   }
   EXPECT_EQ(tree.leaf_containing({kOctreeGrid, 0, 0}), kNoIndex);
   EXPECT_EQ(tree.find_leaf({1, 0, 0}, 3), kNoIndex);  // not aligned

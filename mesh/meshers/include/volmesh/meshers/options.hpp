@@ -21,7 +21,7 @@ struct OptionSpec {
   std::string help;  // one line for --help, saying the default where there is one
   Type type = Type::flag;
   double min = 0.0, max = 0.0;       // integer, real: the closed range of the values
-  std::vector<std::string> choices;  // choice: the values allowed
+  std::vector<std::string> choices = {};  // choice: the values allowed
 };
 
 using OptionValue = std::variant<bool, std::int64_t, double, std::string>;

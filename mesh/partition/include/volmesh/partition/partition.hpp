@@ -25,7 +25,7 @@ struct PartitionOptions {
   bool contiguous = false;
   // One weight >= 0 per cell (e.g. its face count, for a solver whose cost grows with it);
   // empty: every cell weighs 1. Parts are balanced by weight.
-  std::vector<Index> cell_weights;
+  std::vector<Index> cell_weights = {};
 };
 
 struct PartitionStats {
