@@ -13,7 +13,7 @@ namespace volmesh {
 namespace {
 
 constexpr Index kRegion = 1;
-// 2^k + 1 samples with k above this would overflow the node and sample counts of an Index.
+// Deepest grid whose (2^k + 1)^3 samples an Index counts (2049^3 would not fit).
 constexpr int kMaxDepth = 10;
 
 // k with dims = 2^k + 1 on every axis; throws InputError otherwise.
