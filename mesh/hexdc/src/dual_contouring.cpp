@@ -13,8 +13,6 @@ namespace volmesh {
 namespace {
 
 constexpr Index kRegion = 1;
-// Deepest grid whose (2^k + 1)^3 samples an Index counts (2049^3 would not fit).
-constexpr int kMaxDepth = 10;
 
 // k with dims = 2^k + 1 on every axis; throws InputError otherwise.
 int grid_depth(const VoxelGrid& field) {
@@ -23,10 +21,10 @@ int grid_depth(const VoxelGrid& field) {
                          std::to_string(d[2]);
   if (d[0] != d[1] || d[0] != d[2])
     throw InputError("hexdc: grid " + dims_text + " is not cubic; the octree needs dim^3 samples");
-  for (int k = 1; k <= kMaxDepth; ++k)
+  for (int k = 1; k <= kHexdcMaxDepth; ++k)
     if (d[0] == (Index{1} << k) + 1) return k;
   throw InputError("hexdc: grid " + dims_text + ": dim " + std::to_string(d[0]) +
-                   " is not 2^k + 1 with 1 <= k <= " + std::to_string(kMaxDepth));
+                   " is not 2^k + 1 with 1 <= k <= " + std::to_string(kHexdcMaxDepth));
 }
 
 enum class NodeKind { outside, boundary, interior };

@@ -17,6 +17,9 @@
 
 namespace volmesh {
 
+// Deepest grid whose (2^k + 1)^3 samples an Index counts (2049^3 would not fit).
+inline constexpr int kHexdcMaxDepth = 10;
+
 struct HexdcStats {
   Index nodes_per_axis = 0;      // 2^L
   Index interior_vertices = 0;   // nodes with every sample >= 0

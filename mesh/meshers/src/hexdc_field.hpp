@@ -1,0 +1,23 @@
+#pragma once
+// The signed-distance voxels (positive inside) the hexdc mesher contours, from any Domain.
+#include "volmesh/core/voxel_grid.hpp"
+#include "volmesh/domain/domain.hpp"
+
+namespace volmesh::meshers {
+
+// The margin (sdf_layout's fraction of the box's largest side) that leaves at least one node
+// of level `level` (2^level nodes per axis) between the domain's box and the grid's border,
+// so that the surface never touches the border. Needs level >= 2.
+double hexdc_margin(int level);
+
+// The field on a (2^depth + 1)^3 grid:
+//  - a signed-distance grid domain (SdfGridDomain) already of that size: its own samples;
+//    of another size: its trilinear interpolant on sdf_layout(its bounds, margin);
+//  - any other domain, on sdf_layout(its bounds, margin): the sign from region() (inside is
+//    region != 0), the magnitude the distance to the nearest boundary crossing along the grid
+//    edges at the sample, one spacing where none of them crosses. Along a crossed edge the
+//    linear interpolant then vanishes at the exact crossing when it is the nearest one of
+//    both ends; elsewhere it is an upper bound of the distance.
+VoxelGrid hexdc_field(const Domain& domain, int depth, double margin);
+
+}  // namespace volmesh::meshers
