@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "run_volmesh.hpp"
+#include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
 
@@ -93,6 +94,59 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
   const PolyMesh tets = read_mesh(dir / "tet.vtu");
   EXPECT_EQ(tets.num_cells(), 6 * 64);
   EXPECT_NEAR(check_validity(tets).total_volume, 1.0, 1e-12);
+}
+
+// hexdc on the unit ball at level 3 (8 nodes per axis, one of them margin on each side).
+TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc");
+  const fs::path out = dir / "ball.vtu";
+  const auto r = run_volmesh("mesh hexdc builtin:ball --level 3 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "hexdc");
+  EXPECT_EQ(j["nodes_per_axis"], 8);
+  EXPECT_EQ(j["samples_per_axis"], 33);  // the default dim: level + 2
+  EXPECT_EQ(j["invalid_by_corner_tets"], 0);
+  EXPECT_EQ(j["qef_fallbacks"], 0);  // a sphere's crossings pin every QEF vertex
+  EXPECT_GT(j["interior_vertices"].get<Index>(), 0);
+  EXPECT_GT(j["boundary_vertices"].get<Index>(), 0);
+  EXPECT_EQ(j["interior_vertices"].get<Index>() + j["boundary_vertices"].get<Index>(),
+            j["vertices"].get<Index>());
+  EXPECT_EQ(j["hexes"], j["cells"]);
+  const double min_jacobian = j["min_scaled_jacobian"].get<double>();
+  EXPECT_TRUE(min_jacobian > 0.0 && min_jacobian <= 1.0) << min_jacobian;
+  const double distortion = j["max_quad_distortion_deg"].get<double>();
+  EXPECT_TRUE(distortion >= 0.0 && distortion < 180.0) << distortion;
+  EXPECT_TRUE(j["field_seconds"].is_number());
+  EXPECT_TRUE(j["contour_seconds"].is_number());
+
+  // The writer gives every cell VTK_HEXAHEDRON (12) exactly when each one is a hex, and
+  // writes polyhedra's face arrays otherwise.
+  EXPECT_EQ(test::slurp(out).find("faceoffsets"), std::string::npos);
+  const PolyMesh mesh = read_mesh(out);
+  const CellFaces cell_faces = build_cell_faces(mesh);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    ASSERT_EQ(classify_cell(mesh, cell_faces, c).shape, CellShape::Hexahedron) << c;
+  const ValidityReport v = check_validity(mesh);
+  EXPECT_TRUE(v.valid());
+  EXPECT_EQ(j["cells"], mesh.num_cells());
+  // 4.125 against 4/3 pi = 4.189 at this level: within 3%.
+  const double ball = 4.0 * std::numbers::pi / 3.0;  // builtin:ball has radius 1
+  EXPECT_NEAR(v.total_volume, ball, 0.03 * ball);
+}
+
+TEST(CliMesh, HexdcRefusesLevelsOutsideItsGridWithOneLine) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-bad");
+  const fs::path out = dir / "out.vtu";
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--level 0", "--level 0: at least 2"},
+           {"--level 5 --dim 4", "--level 5 is deeper than --dim 4"}}) {
+    const auto r = run_volmesh("mesh hexdc builtin:ball " + args + " -o " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
 }
 
 // The OpenFOAM case check_mesh_report writes for `name`.
