@@ -103,8 +103,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
     throw InputError("hexdc: " + std::to_string(f.invalid) + " of " +
                      std::to_string(stats.hexes) + " hexes of " + request.domain_name +
                      " fail the ten corner tets, the first cell " +
-                     std::to_string(f.first_invalid) + " at " + where.str() +
-                     "; try another --level");
+                     std::to_string(f.first_invalid) + " at " + where.str());
   }
   r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
   r.summary = {{"nodes_per_axis", stats.nodes_per_axis},
