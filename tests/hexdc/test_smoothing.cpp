@@ -135,8 +135,8 @@ TEST(SmoothHexes, RunsAreIdentical) {
   EXPECT_EQ(a.points, b.points);
 }
 
-// The sphere of test_dual_contouring: radius 0.8, exact distance sampled on 65^3 over [-1,1]^3.
-VoxelGrid sphere_grid() {
+// 65^3 samples of f over [-1,1]^3, as test_dual_contouring's fields.
+VoxelGrid sample(const std::function<double(const Vec3&)>& f) {
   constexpr Index kDim = 65;
   VoxelGrid g;
   g.dims = {kDim, kDim, kDim};
@@ -147,21 +147,44 @@ VoxelGrid sphere_grid() {
     for (Index j = 0; j < kDim; ++j)
       for (Index i = 0; i < kDim; ++i)
         g.values[static_cast<std::size_t>(g.index(i, j, k))] =
-            static_cast<float>(0.8 - g.point(i, j, k).norm());
+            static_cast<float>(f(g.point(i, j, k)));
   return g;
 }
 
+void print_stats(const char* field, int level, const SmoothingStats& stats) {
+  std::cout << field << " level " << level << ": min SJ " << stats.min_scaled_jacobian_before
+            << " -> " << stats.min_scaled_jacobian_after << ", invalid "
+            << stats.invalid_hexes_before << " -> " << stats.invalid_hexes_after << ", moves "
+            << stats.moves_accepted << '/' << stats.moves_rejected << ", sweeps " << stats.sweeps
+            << '\n';
+}
+
+// Measured: min SJ 0.123 -> 0.141, 0.073 -> 0.078, 0.021 -> 0.022 at levels 3-5, no invalid
+// hexes. The worst hexes have two or three faces on the surface, which smoothing cannot
+// square (the paper inserts a boundary layer for them).
 TEST(SmoothHexes, SphereMeshNeverGetsWorse) {
-  const VoxelGrid grid = sphere_grid();
+  const VoxelGrid grid = sample([](const Vec3& p) { return 0.8 - p.norm(); });
   for (int level = 3; level <= 5; ++level) {
     HexMesh mesh = to_hex_mesh(hexdc_uniform(grid, level, nullptr));
     const SmoothingStats stats = smooth_hexes(mesh);
     expect_never_worse(stats);
     EXPECT_EQ(min_sj(mesh), stats.min_scaled_jacobian_after);
-    std::cout << "level " << level << ": min SJ " << stats.min_scaled_jacobian_before << " -> "
-              << stats.min_scaled_jacobian_after << ", invalid " << stats.invalid_hexes_before
-              << " -> " << stats.invalid_hexes_after << ", moves " << stats.moves_accepted << '/'
-              << stats.moves_rejected << ", sweeps " << stats.sweeps << '\n';
+    print_stats("sphere", level, stats);
+  }
+}
+
+// The torus of test_dual_contouring, whose concave side has hexes failing the corner tets:
+// smoothing may repair some and breaks none. Measured at levels 3-5: invalid 0, 28, 164 before
+// and 0, 28, 131 after; min SJ at level 3 0.062 -> 0.239.
+TEST(SmoothHexes, TorusInvalidHexesDoNotGrow) {
+  const VoxelGrid grid = sample([](const Vec3& p) {
+    return 0.25 - std::hypot(std::hypot(p.x(), p.y()) - 0.6, p.z());
+  });
+  for (int level = 3; level <= 5; ++level) {
+    HexMesh mesh = to_hex_mesh(hexdc_uniform(grid, level, nullptr));
+    const SmoothingStats stats = smooth_hexes(mesh);
+    expect_never_worse(stats);
+    print_stats("torus", level, stats);
   }
 }
 

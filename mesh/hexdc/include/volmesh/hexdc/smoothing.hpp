@@ -25,8 +25,8 @@ struct SmoothingOptions {
   int sweeps = 10;
   int halvings = 4;  // a rejected step is halved this many times before the node is kept
   // Boundary nodes whose quad normals differ from their mean normal by more than this are
-  // kept in place (box edges and corners: 45°).
-  double feature_angle_deg = 30.0;
+  // kept in place: below the 45° of a box edge, so that box edges and corners stay.
+  double feature_angle_deg = 40.0;
 };
 
 struct SmoothingStats {
