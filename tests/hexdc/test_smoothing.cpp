@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "volmesh/core/convert.hpp"
+#include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
@@ -126,6 +127,14 @@ TEST(SmoothHexes, MoveThatWouldFoldAHexIsRejected) {
   HexMesh halved = before;
   expect_never_worse(smooth_hexes(halved));
   EXPECT_TRUE(all_valid(halved));
+}
+
+TEST(SmoothHexes, BadOptionsThrow) {
+  HexMesh mesh = structured_hex_mesh(Vec3::Zero(), Vec3::Ones(), {1, 1, 1});
+  EXPECT_THROW(smooth_hexes(mesh, {.sweeps = -1}), InputError);
+  EXPECT_THROW(smooth_hexes(mesh, {.halvings = -1}), InputError);
+  EXPECT_THROW(smooth_hexes(mesh, {.feature_angle_deg = 200.0}), InputError);
+  EXPECT_EQ(smooth_hexes(mesh).moves_accepted, 0);  // one cube: every node a corner
 }
 
 TEST(SmoothHexes, RunsAreIdentical) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 #include "volmesh/quality/hex_metrics.hpp"
 
@@ -12,8 +13,9 @@ namespace volmesh {
 namespace {
 
 // The twelve edges of a hex in VTK corners.
-constexpr std::array<std::array<int, 2>, 12> kHexEdges{
-    {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                        {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                        {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
 // A step shorter than this fraction of an edge at the node counts as no move:
 // a converged node would otherwise be "moved" by round-off in every sweep.
@@ -100,7 +102,7 @@ Vec3 laplacian_step(const HexMesh& mesh, const NodeLinks& links, std::size_t v) 
   return step - step.dot(normal) * normal;
 }
 
-// The quality of the node's hexes now: per hex its scaled Jacobian and corner-tet validity.
+// Per hex of the mesh as it is now: its scaled Jacobian and corner-tet validity.
 struct HexState {
   std::vector<double> scaled_jacobian;
   std::vector<bool> valid;
@@ -134,20 +136,21 @@ bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, con
   const Vec3 old_point = mesh.points[v];
   mesh.points[v] = target;
   std::vector<double> new_sj;
+  std::vector<bool> new_valid;
   for (const Index h : hexes) {
     const auto corners = hex_corners(mesh, h);
-    const double sj = hex_scaled_jacobian(corners);
+    new_sj.push_back(hex_scaled_jacobian(corners));
+    new_valid.push_back(hex_corner_tets_positive(corners));
     const bool was_valid = state.valid[static_cast<std::size_t>(h)];
-    if (sj < old_min || (was_valid && !hex_corner_tets_positive(corners))) {
+    if (new_sj.back() < old_min || (was_valid && !new_valid.back())) {
       mesh.points[v] = old_point;
       return false;
     }
-    new_sj.push_back(sj);
   }
   for (std::size_t i = 0; i < hexes.size(); ++i) {
     const auto h = static_cast<std::size_t>(hexes[i]);
     state.scaled_jacobian[h] = new_sj[i];
-    state.valid[h] = hex_corner_tets_positive(hex_corners(mesh, hexes[i]));
+    state.valid[h] = new_valid[i];
   }
   return true;
 }
@@ -155,6 +158,10 @@ bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, con
 }  // namespace
 
 SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
+  if (options.sweeps < 0 || options.halvings < 0)
+    throw InputError("smooth_hexes: sweeps and halvings must not be negative");
+  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
+    throw InputError("smooth_hexes: feature angle must lie in [0, 180] degrees");
   SmoothingStats stats;
   if (mesh.cells.empty()) return stats;
   const NodeLinks links = link_nodes(mesh);

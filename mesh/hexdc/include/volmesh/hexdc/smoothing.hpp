@@ -39,7 +39,8 @@ struct SmoothingStats {
 };
 
 // Moves mesh.points in place; connectivity and boundary faces are unchanged. The boundary is
-// taken from mesh.boundary_faces. An empty mesh is left as it is.
+// taken from mesh.boundary_faces. An empty mesh is left as it is. Throws InputError for
+// negative sweeps or halvings or a feature angle outside [0, 180] degrees.
 SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options = {});
 
 }  // namespace volmesh
