@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "hex_mesh_geometry.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 #include "volmesh/quality/hex_metrics.hpp"
@@ -12,10 +13,7 @@
 namespace volmesh {
 namespace {
 
-// The twelve edges of a hex in VTK corners.
-constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
-                                                        {4, 5}, {5, 6}, {6, 7}, {7, 4},
-                                                        {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+using namespace hexdc_detail;
 
 // A step shorter than this fraction of an edge at the node counts as no move:
 // a converged node would otherwise be "moved" by round-off in every sweep.
@@ -54,37 +52,6 @@ NodeLinks link_nodes(const HexMesh& mesh) {
     }
   }
   return links;
-}
-
-std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
-  std::array<Vec3, 8> corners;
-  const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
-  for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[static_cast<std::size_t>(cell[c])];
-  return corners;
-}
-
-// Half the cross product of the diagonals: the quad's normal times its area, exact for a
-// planar quad, so that quads in an axis plane give an exactly axial normal.
-Vec3 quad_vector_area(const HexMesh& mesh, Index q) {
-  const auto& quad = mesh.boundary_faces[static_cast<std::size_t>(q)];
-  const auto p = [&](std::size_t c) { return mesh.points[static_cast<std::size_t>(quad[c])]; };
-  return 0.5 * (p(2) - p(0)).cross(p(3) - p(1));
-}
-
-Vec3 node_normal(const HexMesh& mesh, const std::vector<Index>& quads) {
-  Vec3 sum = Vec3::Zero();
-  for (const Index q : quads) sum += quad_vector_area(mesh, q);
-  return sum.normalized();  // zero when the areas cancel
-}
-
-// A boundary node on a crease or corner: a quad's normal leaves the mean normal by more than
-// the feature angle (or the quads have no mean normal).
-bool on_feature(const HexMesh& mesh, const std::vector<Index>& quads, double cos_feature) {
-  const Vec3 normal = node_normal(mesh, quads);
-  if (normal.isZero()) return true;
-  return std::any_of(quads.begin(), quads.end(), [&](Index q) {
-    return quad_vector_area(mesh, q).normalized().dot(normal) < cos_feature;
-  });
 }
 
 Vec3 mean_of(const HexMesh& mesh, const std::vector<Index>& nodes) {

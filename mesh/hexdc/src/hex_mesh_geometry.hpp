@@ -1,0 +1,48 @@
+#pragma once
+// Geometry of a HexMesh's hexes and boundary quads shared by smoothing and pillowing.
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "volmesh/core/element_mesh.hpp"
+
+namespace volmesh::hexdc_detail {
+
+// The twelve edges of a hex in VTK corners.
+inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                               {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                               {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+inline std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
+  std::array<Vec3, 8> corners;
+  const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
+  for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[static_cast<std::size_t>(cell[c])];
+  return corners;
+}
+
+// Half the cross product of the diagonals: the quad's normal times its area, exact for a planar
+// quad, so that quads in an axis plane give an exactly axial normal.
+inline Vec3 quad_vector_area(const HexMesh& mesh, Index q) {
+  const auto& quad = mesh.boundary_faces[static_cast<std::size_t>(q)];
+  const auto p = [&](std::size_t c) { return mesh.points[static_cast<std::size_t>(quad[c])]; };
+  return 0.5 * (p(2) - p(0)).cross(p(3) - p(1));
+}
+
+// The unit sum of the vector areas of `quads`; zero when the areas cancel.
+inline Vec3 node_normal(const HexMesh& mesh, const std::vector<Index>& quads) {
+  Vec3 sum = Vec3::Zero();
+  for (const Index q : quads) sum += quad_vector_area(mesh, q);
+  return sum.normalized();
+}
+
+// A boundary node on a crease or corner: a quad's normal leaves the mean normal by more than the
+// feature angle (or the quads have no mean normal).
+inline bool on_feature(const HexMesh& mesh, const std::vector<Index>& quads, double cos_feature) {
+  const Vec3 normal = node_normal(mesh, quads);
+  if (normal.isZero()) return true;
+  return std::any_of(quads.begin(), quads.end(), [&](Index q) {
+    return quad_vector_area(mesh, q).normalized().dot(normal) < cos_feature;
+  });
+}
+
+}  // namespace volmesh::hexdc_detail
