@@ -1,11 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <set>
 #include <string>
 
+#include "fields.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
@@ -15,21 +15,7 @@
 namespace volmesh {
 namespace {
 
-// dim^3 samples of f from `origin`, `spacing` apart.
-VoxelGrid sample(Index dim, const Vec3& origin, double spacing,
-                 const std::function<double(const Vec3&)>& f) {
-  VoxelGrid g;
-  g.dims = {dim, dim, dim};
-  g.origin = origin;
-  g.spacing = Vec3::Constant(spacing);
-  g.values.resize(static_cast<std::size_t>(dim) * dim * dim);
-  for (Index k = 0; k < dim; ++k)
-    for (Index j = 0; j < dim; ++j)
-      for (Index i = 0; i < dim; ++i)
-        g.values[static_cast<std::size_t>(g.index(i, j, k))] =
-            static_cast<float>(f(g.point(i, j, k)));
-  return g;
-}
+using test_fields::sample;
 
 // The exact signed distance to the box [lo, hi]^3, positive inside.
 double box_distance(const Vec3& p, double lo, double hi) {
@@ -58,15 +44,12 @@ void expect_every_hex_valid(const PolyMesh& mesh) {
 }
 
 constexpr double kRadius = 0.8;
-// 65^3 samples over [-1, 1]^3, as the paper's examples: k = 6.
-constexpr Index kSphereDim = 65;
 // Relative volume error at level 3, falling at least fourfold per level (second order in the
 // node size). Measured: 0.0107, 0.0022, 0.0001 at levels 3, 4, 5.
 constexpr double kSphereErrorAtLevel3 = 0.02;
 
 VoxelGrid sphere_grid() {
-  return sample(kSphereDim, Vec3::Constant(-1.0), 2.0 / (kSphereDim - 1),
-                [](const Vec3& p) { return kRadius - p.norm(); });
+  return test_fields::sample_paper_cube([](const Vec3& p) { return kRadius - p.norm(); });
 }
 
 TEST(HexdcUniform, SphereMeshIsValidAndConverges) {
@@ -101,11 +84,7 @@ TEST(HexdcUniform, SphereMeshIsValidAndConverges) {
 // 28 of 348, 164 of 2952 at levels 3, 4, 5), as the paper's uniform meshes do before
 // pillowing; stats count exactly those, and every cell still has a positive volume.
 TEST(HexdcUniform, TorusCountsItsInvalidHexes) {
-  const VoxelGrid grid = sample(kSphereDim, Vec3::Constant(-1.0), 2.0 / (kSphereDim - 1),
-                                [](const Vec3& p) {
-                                  const double ring = std::hypot(p.x(), p.y()) - 0.6;
-                                  return 0.25 - std::hypot(ring, p.z());
-                                });
+  const VoxelGrid grid = test_fields::sample_paper_cube(test_fields::torus_distance);
   for (int level = 3; level <= 5; ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
     HexdcStats stats;

@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <iostream>
 
+#include "fields.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
@@ -144,22 +144,6 @@ TEST(SmoothHexes, RunsAreIdentical) {
   EXPECT_EQ(a.points, b.points);
 }
 
-// 65^3 samples of f over [-1,1]^3, as test_dual_contouring's fields.
-VoxelGrid sample(const std::function<double(const Vec3&)>& f) {
-  constexpr Index kDim = 65;
-  VoxelGrid g;
-  g.dims = {kDim, kDim, kDim};
-  g.origin = Vec3::Constant(-1.0);
-  g.spacing = Vec3::Constant(2.0 / (kDim - 1));
-  g.values.resize(static_cast<std::size_t>(kDim) * kDim * kDim);
-  for (Index k = 0; k < kDim; ++k)
-    for (Index j = 0; j < kDim; ++j)
-      for (Index i = 0; i < kDim; ++i)
-        g.values[static_cast<std::size_t>(g.index(i, j, k))] =
-            static_cast<float>(f(g.point(i, j, k)));
-  return g;
-}
-
 void print_stats(const char* field, int level, const SmoothingStats& stats) {
   std::cout << field << " level " << level << ": min SJ " << stats.min_scaled_jacobian_before
             << " -> " << stats.min_scaled_jacobian_after << ", invalid "
@@ -172,7 +156,8 @@ void print_stats(const char* field, int level, const SmoothingStats& stats) {
 // hexes. The worst hexes have two or three faces on the surface, which smoothing cannot
 // square (the paper inserts a boundary layer for them).
 TEST(SmoothHexes, SphereMeshNeverGetsWorse) {
-  const VoxelGrid grid = sample([](const Vec3& p) { return 0.8 - p.norm(); });
+  const VoxelGrid grid =
+      test_fields::sample_paper_cube([](const Vec3& p) { return 0.8 - p.norm(); });
   for (int level = 3; level <= 5; ++level) {
     HexMesh mesh = to_hex_mesh(hexdc_uniform(grid, level, nullptr));
     const SmoothingStats stats = smooth_hexes(mesh);
@@ -186,9 +171,7 @@ TEST(SmoothHexes, SphereMeshNeverGetsWorse) {
 // smoothing may repair some and breaks none. Measured at levels 3-5: invalid 0, 28, 164 before
 // and 0, 28, 131 after; min SJ at level 3 0.062 -> 0.239.
 TEST(SmoothHexes, TorusInvalidHexesDoNotGrow) {
-  const VoxelGrid grid = sample([](const Vec3& p) {
-    return 0.25 - std::hypot(std::hypot(p.x(), p.y()) - 0.6, p.z());
-  });
+  const VoxelGrid grid = test_fields::sample_paper_cube(test_fields::torus_distance);
   for (int level = 3; level <= 5; ++level) {
     HexMesh mesh = to_hex_mesh(hexdc_uniform(grid, level, nullptr));
     const SmoothingStats stats = smooth_hexes(mesh);
