@@ -1,5 +1,6 @@
 // The dual-contouring hex mesher (volmesh/hexdc/dual_contouring.hpp): the domain's signed
-// distances on a (2^dim + 1)^3 grid, contoured at octree level --level.
+// distances on a (2^dim + 1)^3 grid, contoured at octree level --level, then given the buffer
+// layer (pillow.hpp) and smoothed (smoothing.hpp).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -14,6 +15,8 @@
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
+#include "volmesh/hexdc/pillow.hpp"
+#include "volmesh/hexdc/smoothing.hpp"
 
 namespace volmesh::meshers {
 
@@ -50,8 +53,7 @@ struct HexFigures {
   Vec3 first_invalid_centre = Vec3::Zero();
 };
 
-HexFigures hex_figures(const PolyMesh& mesh) {
-  const HexMesh hexes = to_hex_mesh(mesh);
+HexFigures hex_figures(const HexMesh& hexes) {
   HexFigures f;
   for (std::size_t c = 0; c < hexes.cells.size(); ++c) {
     std::array<Vec3, 8> corners;
@@ -90,21 +92,29 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
 
   const Clock::time_point contouring = Clock::now();
   HexdcStats stats;
-  MeshResult r;
-  r.mesh = hexdc_uniform(field, level, &stats);
+  HexMesh hexes = to_hex_mesh(hexdc_uniform(field, level, &stats));
   const double contour_seconds = seconds_since(contouring);
 
+  // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
+  // hexes it left failing, now that they are interior.
+  const Clock::time_point improving = Clock::now();
+  const PillowStats pillow = pillow_boundary(hexes);
+  const SmoothingStats smoothing = smooth_hexes(hexes);
+  const double improve_seconds = seconds_since(improving);
+
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
-  const HexFigures f = hex_figures(r.mesh);
+  const HexFigures f = hex_figures(hexes);
   if (f.invalid > 0) {
     std::ostringstream where;
     where << "(" << f.first_invalid_centre.x() << ", " << f.first_invalid_centre.y() << ", "
           << f.first_invalid_centre.z() << ")";
     throw InputError("hexdc: " + std::to_string(f.invalid) + " of " +
-                     std::to_string(stats.hexes) + " hexes of " + request.domain_name +
+                     std::to_string(hexes.num_cells()) + " hexes of " + request.domain_name +
                      " fail the ten corner tets, the first cell " +
                      std::to_string(f.first_invalid) + " at " + where.str());
   }
+  MeshResult r;
+  r.mesh = to_poly_mesh(hexes);
   r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
   r.summary = {{"nodes_per_axis", stats.nodes_per_axis},
                {"samples_per_axis", field.dims[0]},
@@ -112,11 +122,23 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                {"boundary_vertices", stats.boundary_vertices},
                {"qef_fallbacks", stats.qef_fallbacks},
                {"hexes", stats.hexes},
+               {"invalid_before_pillow", stats.invalid_hexes},
+               {"pillow_copies", pillow.boundary_nodes},
+               {"pillow_hexes", pillow.pillow_hexes},
+               {"pillow_shrunk_copies", pillow.shrunk_copies},
+               {"two_boundary_faces_before_pillow", pillow.multi_boundary_hexes_before},
+               {"two_boundary_faces_after_pillow", pillow.multi_boundary_hexes_after},
+               {"invalid_after_pillow", pillow.invalid_hexes_after},
+               {"min_scaled_jacobian_before_pillow", pillow.min_scaled_jacobian_before},
+               {"min_scaled_jacobian_after_pillow", pillow.min_scaled_jacobian_after},
+               {"smoothing_sweeps", smoothing.sweeps},
+               {"smoothing_moves", smoothing.moves_accepted},
                {"invalid_by_corner_tets", f.invalid},
                {"min_scaled_jacobian", f.min_scaled_jacobian},
                {"max_quad_distortion_deg", f.max_quad_distortion_deg},
                {"field_seconds", field_seconds},
-               {"contour_seconds", contour_seconds}};
+               {"contour_seconds", contour_seconds},
+               {"improve_seconds", improve_seconds}};
   return r;
 }
 
