@@ -5,6 +5,7 @@
 #include <set>
 
 #include "fields.hpp"
+#include "hex_checks.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
@@ -16,11 +17,7 @@
 namespace volmesh {
 namespace {
 
-std::array<Vec3, 8> corners_of(const HexMesh& mesh, std::size_t h) {
-  std::array<Vec3, 8> corners;
-  for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[mesh.cells[h][c]];
-  return corners;
-}
+using test_hexdc::corners_of;
 
 // The trilinear hex's volume: det J integrated by 2x2x2 Gauss points, exact since det J has degree
 // at most 2 in each reference coordinate. Neighbours share their bilinear faces, so the sum over a

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "fields.hpp"
+#include "hex_checks.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
@@ -14,11 +15,7 @@
 namespace volmesh {
 namespace {
 
-std::array<Vec3, 8> corners_of(const HexMesh& mesh, std::size_t h) {
-  std::array<Vec3, 8> corners;
-  for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[mesh.cells[h][c]];
-  return corners;
-}
+using test_hexdc::corners_of;
 
 double min_sj(const HexMesh& mesh) {
   double least = 1.0;
