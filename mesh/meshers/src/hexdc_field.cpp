@@ -8,6 +8,7 @@
 
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh::meshers {
 
@@ -31,6 +32,15 @@ void resample(const SdfGridDomain& source, VoxelGrid& grid) {
   const std::vector<Vec3> points = sample_points(grid);
   for (std::size_t s = 0; s < points.size(); ++s)
     grid.values[s] = static_cast<float>(source.value(points[s]));
+}
+
+// The one outermost surface of a surface domain, or kNoIndex if there are several (disjoint
+// solids: their union's distance is not one surface's, so they take sample_domain's bound).
+// Inside the outermost surface is exactly region != 0, nested surfaces being interfaces.
+Index outermost(const SurfaceDomain& domain) {
+  const std::vector<Index>& depths = domain.depths();
+  if (std::count(depths.begin(), depths.end(), 0) != 1) return kNoIndex;
+  return static_cast<Index>(std::find(depths.begin(), depths.end(), 0) - depths.begin());
 }
 
 // Sign from the regions, magnitude from the crossings of the grid edges whose ends differ.
@@ -87,8 +97,12 @@ VoxelGrid hexdc_field(const Domain& domain, int depth, double margin) {
     return sdf->grid();
   VoxelGrid grid = sdf_layout(domain.bounds(), dim, margin);
   grid.values.resize(static_cast<std::size_t>(dim) * dim * dim);
+  const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain);
+  const Index outer = surfaces != nullptr ? outermost(*surfaces) : kNoIndex;
   if (sdf != nullptr)
     resample(*sdf, grid);
+  else if (outer != kNoIndex)
+    SignedDistance(surfaces->surface(outer), "surface").sample(grid);  // positive inside
   else
     sample_domain(domain, grid);
   return grid;

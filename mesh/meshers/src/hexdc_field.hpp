@@ -13,6 +13,8 @@ double hexdc_margin(int level);
 // The field on a (2^depth + 1)^3 grid:
 //  - a signed-distance grid domain (SdfGridDomain) already of that size: its own samples;
 //    of another size: its trilinear interpolant on sdf_layout(its bounds, margin);
+//  - a surface domain with one outermost surface, on sdf_layout(its bounds, margin): that
+//    surface's exact signed distance (SignedDistance; inside it is exactly region != 0);
 //  - any other domain, on sdf_layout(its bounds, margin): the sign from region() (inside is
 //    region != 0), the magnitude the distance to the nearest boundary crossing along the grid
 //    edges at the sample, one spacing where none of them crosses. Along a crossed edge the
