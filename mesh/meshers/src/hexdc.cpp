@@ -2,9 +2,7 @@
 // distances on a (2^dim + 1)^3 grid, contoured at octree level --level, then given the buffer
 // layer (pillow.hpp) and smoothed (smoothing.hpp).
 #include <algorithm>
-#include <array>
 #include <chrono>
-#include <limits>
 #include <sstream>
 
 #include "hexdc_field.hpp"
@@ -14,7 +12,7 @@
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
-#include "volmesh/hexdc/hex_quality.hpp"
+#include "volmesh/hexdc/hex_mesh_stats.hpp"
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/smoothing.hpp"
 
@@ -45,33 +43,21 @@ int own_depth(const Domain& domain) {
   return k;
 }
 
-struct HexFigures {
-  double min_scaled_jacobian = std::numeric_limits<double>::infinity();
-  double max_quad_distortion_deg = 0.0;
-  Index invalid = 0;  // failing the ten corner tets
-  Index first_invalid = -1;
-  Vec3 first_invalid_centre = Vec3::Zero();
-};
-
-HexFigures hex_figures(const HexMesh& hexes) {
-  HexFigures f;
-  for (std::size_t c = 0; c < hexes.cells.size(); ++c) {
-    std::array<Vec3, 8> corners;
-    Vec3 centre = Vec3::Zero();
-    for (int v = 0; v < 8; ++v) {
-      corners[v] = hexes.points[hexes.cells[c][v]];
-      centre += corners[v] / 8.0;
-    }
-    const HexQuality q = hex_quality(corners);
-    f.min_scaled_jacobian = std::min(f.min_scaled_jacobian, q.scaled_jacobian);
-    f.max_quad_distortion_deg = std::max(f.max_quad_distortion_deg, q.max_quad_distortion_deg);
-    if (q.corner_tets_positive) continue;
-    if (f.invalid++ == 0) {
-      f.first_invalid = static_cast<Index>(c);
-      f.first_invalid_centre = centre;
-    }
-  }
-  return f;
+// One column of the paper's Table 1: the mesh after a stage, and the stage's time.
+nlohmann::json stage_row(const HexMeshStats& s, double seconds) {
+  nlohmann::json valence = nlohmann::json::object();
+  for (const auto& [hexes, nodes] : s.valence) valence[std::to_string(hexes)] = nodes;
+  return {{"nodes", s.nodes},
+          {"cells", s.cells},
+          {"max_edge", s.max_edge},
+          {"min_edge", s.min_edge},
+          {"max_aspect_ratio", s.max_aspect_ratio},
+          {"max_quad_distortion_deg", s.max_quad_distortion_deg},
+          {"degenerate_hexes", s.degenerate},
+          {"valence", valence},
+          {"min_scaled_jacobian", s.min_scaled_jacobian},
+          {"mean_scaled_jacobian", s.mean_scaled_jacobian},
+          {"seconds", seconds}};
 }
 
 MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
@@ -94,6 +80,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   HexdcStats stats;
   HexMesh hexes = to_hex_mesh(hexdc_uniform(field, level, &stats));
   const double contour_seconds = seconds_since(contouring);
+  const HexMeshStats uniform = hex_mesh_stats(hexes);
 
   // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
   // hexes it left failing, now that they are interior.
@@ -103,42 +90,37 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const double improve_seconds = seconds_since(improving);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
-  const HexFigures f = hex_figures(hexes);
-  if (f.invalid > 0) {
+  const HexMeshStats improved = hex_mesh_stats(hexes);
+  if (improved.degenerate > 0) {
+    const Vec3& c = improved.first_degenerate_centre;
     std::ostringstream where;
-    where << "(" << f.first_invalid_centre.x() << ", " << f.first_invalid_centre.y() << ", "
-          << f.first_invalid_centre.z() << ")";
-    throw InputError("hexdc: " + std::to_string(f.invalid) + " of " +
-                     std::to_string(hexes.num_cells()) + " hexes of " + request.domain_name +
+    where << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+    throw InputError("hexdc: " + std::to_string(improved.degenerate) + " of " +
+                     std::to_string(improved.cells) + " hexes of " + request.domain_name +
                      " fail the ten corner tets, the first cell " +
-                     std::to_string(f.first_invalid) + " at " + where.str());
+                     std::to_string(improved.first_degenerate) + " at " + where.str());
   }
   MeshResult r;
   r.mesh = to_poly_mesh(hexes);
   r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
   r.summary = {{"nodes_per_axis", stats.nodes_per_axis},
                {"samples_per_axis", field.dims[0]},
+               {"field_seconds", field_seconds},
                {"interior_vertices", stats.interior_vertices},
                {"boundary_vertices", stats.boundary_vertices},
                {"qef_fallbacks", stats.qef_fallbacks},
-               {"hexes", stats.hexes},
-               {"invalid_before_pillow", stats.invalid_hexes},
-               {"pillow_copies", pillow.boundary_nodes},
-               {"pillow_hexes", pillow.pillow_hexes},
-               {"pillow_shrunk_copies", pillow.shrunk_copies},
-               {"two_boundary_faces_before_pillow", pillow.multi_boundary_hexes_before},
-               {"two_boundary_faces_after_pillow", pillow.multi_boundary_hexes_after},
-               {"invalid_after_pillow", pillow.invalid_hexes_after},
-               {"min_scaled_jacobian_before_pillow", pillow.min_scaled_jacobian_before},
-               {"min_scaled_jacobian_after_pillow", pillow.min_scaled_jacobian_after},
-               {"smoothing_sweeps", smoothing.sweeps},
-               {"smoothing_moves", smoothing.moves_accepted},
-               {"invalid_by_corner_tets", f.invalid},
-               {"min_scaled_jacobian", f.min_scaled_jacobian},
-               {"max_quad_distortion_deg", f.max_quad_distortion_deg},
-               {"field_seconds", field_seconds},
-               {"contour_seconds", contour_seconds},
-               {"improve_seconds", improve_seconds}};
+               {"pillow",
+                {{"copies", pillow.boundary_nodes},
+                 {"hexes", pillow.pillow_hexes},
+                 {"shrunk_copies", pillow.shrunk_copies},
+                 {"two_boundary_faces_before", pillow.multi_boundary_hexes_before},
+                 {"two_boundary_faces_after", pillow.multi_boundary_hexes_after},
+                 {"degenerate_after", pillow.invalid_hexes_after}}},
+               {"smoothing",
+                {{"sweeps", smoothing.sweeps}, {"moves", smoothing.moves_accepted}}},
+               {"stages",
+                {{"uniform", stage_row(uniform, contour_seconds)},
+                 {"improved", stage_row(improved, improve_seconds)}}}};
   return r;
 }
 
