@@ -12,6 +12,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 namespace volmesh {
 namespace {
@@ -191,9 +192,29 @@ TEST(CliMesh, HexdcRefusesBadLevelsAndFoldedHexesWithOneLine) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-bad");
   const fs::path out = dir / "out.vtu";
   const std::string torus = VOLMESH_TEST_DATA "/domains/torus.json";
+  // A signed-distance grid with no sample inside, and one of 10 samples per axis.
+  const auto ball_grid = [&](Index n, double radius, const std::string& name) {
+    VoxelGrid grid;
+    grid.dims = {n, n, n};
+    grid.origin = Vec3::Constant(-1.5);
+    grid.spacing = Vec3::Constant(3.0 / static_cast<double>(n - 1));
+    for (Index k = 0; k < n; ++k)
+      for (Index j = 0; j < n; ++j)
+        for (Index i = 0; i < n; ++i)
+          grid.values.push_back(static_cast<float>(radius - grid.point(i, j, k).norm()));
+    write_rawiv(grid, dir / name);
+    return (dir / name).string();
+  };
+  const std::string empty = ball_grid(17, -1.0, "empty.rawiv");
+  const std::string ten = ball_grid(10, 1.0, "ten.rawiv");
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {"builtin:ball --level 0", "--level 0: at least 2"},
-           {"builtin:ball --level 5 --dim 4", "--level 5 is deeper than --dim 4"},
+           {ten + " --level 2", "ten.rawiv: 10x10x10 samples: hexdc needs a cubic grid"},
+           {empty + " --level 2", "empty.rawiv: no sample of the signed distance is >= 0"},
+           {empty + " --level 5", "--level 5 is deeper than the grid of empty.rawiv allows"},
+           {VOLMESH_TEST_DATA "/bad/open_surface.off --level 3", "the surface has a hole"},
+           {"builtin:ball --level 5 --dim 4",
+            "--level 5 is deeper than the grid of builtin:ball allows: 17 samples per axis"},
            // At level 3 the torus's tube is two nodes thick: pillowing and smoothing leave
            // 4 of 136 hexes failing the corner tets, though check_validity passes them.
            {torus + " --level 3", "hexes of torus.json fail the ten corner tets"}}) {

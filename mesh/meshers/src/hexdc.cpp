@@ -3,6 +3,7 @@
 // layer (pillow.hpp) and smoothed (smoothing.hpp).
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 #include "hexdc_field.hpp"
@@ -32,12 +33,20 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// k of a signed-distance grid domain whose own samples are a cubic 2^k + 1 grid, else 0.
-int own_depth(const Domain& domain) {
+// k of a signed-distance grid domain whose own samples are a cubic 2^k + 1 grid, 0 for other
+// domains. Throws InputError for a grid of another size when no --dim asks to resample it: the
+// paper's octree levels need 2^k + 1 samples per axis.
+int own_depth(const Domain& domain, const MeshRequest& request, bool resample) {
   const auto* sdf = dynamic_cast<const SdfGridDomain*>(&domain);
   if (sdf == nullptr) return 0;
   const auto& d = sdf->grid().dims;
-  if (d[0] != d[1] || d[0] != d[2] || !is_octree_dim(d[0])) return 0;
+  if (d[0] != d[1] || d[0] != d[2] || !is_octree_dim(d[0])) {
+    if (resample) return 0;
+    throw InputError(request.domain_name + ": " + std::to_string(d[0]) + "x" +
+                     std::to_string(d[1]) + "x" + std::to_string(d[2]) +
+                     " samples: hexdc needs a cubic grid of 2^k + 1 samples per axis (--dim k "
+                     "resamples it)");
+  }
   int k = 0;
   while ((Index{1} << k) + 1 < d[0]) ++k;
   return k;
@@ -65,16 +74,22 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   if (level < kMinLevel)
     throw InputError("hexdc: --level " + std::to_string(level) + ": at least " +
                      std::to_string(kMinLevel) + " (one node of margin around the domain)");
-  const int depth = static_cast<int>(given<std::int64_t>(request.options, "dim").value_or(
-      own_depth(domain) > 0 ? own_depth(domain)
-                            : std::min(level + kDefaultVoxelsLog2, kHexdcMaxDepth)));
+  const std::optional<std::int64_t> dim = given<std::int64_t>(request.options, "dim");
+  const int own = own_depth(domain, request, dim.has_value());
+  const int depth = static_cast<int>(
+      dim.value_or(own > 0 ? own : std::min(level + kDefaultVoxelsLog2, kHexdcMaxDepth)));
   if (level > depth)
-    throw InputError("hexdc: --level " + std::to_string(level) + " is deeper than --dim " +
-                     std::to_string(depth) + " (at most --level " + std::to_string(depth) + ")");
+    throw InputError("hexdc: --level " + std::to_string(level) + " is deeper than the grid of " +
+                     request.domain_name + " allows: " + std::to_string((Index{1} << depth) + 1) +
+                     " samples per axis (k = " + std::to_string(depth) +
+                     ") give at most --level " + std::to_string(depth));
 
   const Clock::time_point sampling = Clock::now();
   const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level));
   const double field_seconds = seconds_since(sampling);
+  if (std::none_of(field.values.begin(), field.values.end(), [](float v) { return v >= 0.0F; }))
+    throw InputError(request.domain_name +
+                     ": no sample of the signed distance is >= 0: nothing is inside");
 
   const Clock::time_point contouring = Clock::now();
   HexdcStats stats;
