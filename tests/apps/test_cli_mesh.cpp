@@ -126,7 +126,8 @@ TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
   // The uniform mesh's hexes are unit cubes of the node lattice inside: eight around a node.
   EXPECT_GT(uniform["valence"]["8"].get<Index>(), 0);
   Index valence_nodes = 0;
-  for (const auto& [hexes, nodes] : improved["valence"].items()) valence_nodes += nodes.get<Index>();
+  for (const auto& [hexes, nodes] : improved["valence"].items())
+    valence_nodes += nodes.get<Index>();
   EXPECT_EQ(valence_nodes, j["vertices"].get<Index>());
   const double min_jacobian = improved["min_scaled_jacobian"].get<double>();
   const double mean_jacobian = improved["mean_scaled_jacobian"].get<double>();
@@ -182,7 +183,8 @@ TEST(CliMesh, HexdcMeshesATriangulatedCubeToItsVolume) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["stages"]["improved"]["degenerate_hexes"], 0);
-  EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.5);  // a cube's corner hexes: ~1/sqrt(3)
+  // A cube's corner hexes: about 1/sqrt(3).
+  EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.5);
   const ValidityReport v = check_validity(read_mesh(out));
   EXPECT_TRUE(v.valid());
   EXPECT_NEAR(v.total_volume, kCubeVolume, kRelativeError * kCubeVolume);
