@@ -250,10 +250,26 @@ std::string check_mesh_report(const std::string& mesh_args, const std::string& n
   return test::slurp(log);
 }
 
-TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
-  const std::string report = check_mesh_report("staircase builtin:ball --level 4", "staircase");
-  if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
-  EXPECT_NE(report.find("Mesh OK."), std::string::npos) << report;
+// The number after `label` in checkMesh's report, 0 when the line is missing.
+int count_after(const std::string& report, const std::string& label) {
+  const std::size_t at = report.find(label);
+  return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
+}
+
+TEST(CliMesh, StaircaseAndHexdcFoamCasesPassCheckMesh) {
+  for (const auto& [args, name] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"staircase builtin:ball --level 4", "staircase"},
+           {"hexdc builtin:ball --level 4", "hexdc-ball"},
+           {"hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 3", "hexdc-cube"}}) {
+    const std::string report = check_mesh_report(args, name);
+    if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
+    EXPECT_NE(report.find("Mesh OK."), std::string::npos) << args << "\n" << report;
+    if (!name.starts_with("hexdc")) continue;  // the staircase's 2:1 steps make polyhedra
+    // checkMesh counts cell shapes: only hexahedra.
+    EXPECT_EQ(count_after(report, "prisms:"), 0) << args;
+    EXPECT_EQ(count_after(report, "polyhedra:"), 0) << args;
+  }
 }
 
 // A ball, two real surfaces from libcgal-demo and the seven regions of builtin:primitives,
@@ -278,11 +294,6 @@ TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   }
 }
 
-// The number after `label` in checkMesh's report, 0 when the line is missing.
-int count_after(const std::string& report, const std::string& label) {
-  const std::size_t at = report.find(label);
-  return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
-}
 
 // `volmesh check` counts the faces that make checkMesh fail as checkMesh does, on a case that
 // has such faces: builtin:layers6 at level 3.
