@@ -67,7 +67,8 @@ TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   // layers6: many vertex moves (made in parallel waves) and merges (scored in parallel).
   for (const std::string run : {"staircase builtin:primitives --level 4",
                                 "cutcell builtin:primitives --level 4",
-                                "cutcell builtin:layers6 --level 4"}) {
+                                "cutcell builtin:layers6 --level 4",
+                                "hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 4"}) {
     for (const std::string t : {"1", "2"}) {
       const fs::path out = dir / (t + ".vtu");
       const auto r = run_volmesh("mesh " + run + " --threads " + t + " -o " + out.string(), dir);
