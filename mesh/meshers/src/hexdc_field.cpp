@@ -16,6 +16,9 @@ namespace {
 
 // A little more than one node, so that float rounding of the layout cannot eat into it.
 constexpr double kMarginSlack = 1e-3;
+// Contouring reads the field at the ends of crossed voxel edges and their neighbours (central
+// differences): within two spacings of the surface. Farther samples need only their sign.
+constexpr double kExactBandSpacings = 3.0;
 // An outside sample on the surface stays below zero (F >= 0 is inside), by this many spacings.
 constexpr double kOutsideFloor = 1e-6;
 
@@ -102,7 +105,8 @@ VoxelGrid hexdc_field(const Domain& domain, int depth, double margin) {
   if (sdf != nullptr)
     resample(*sdf, grid);
   else if (outer != kNoIndex)
-    SignedDistance(surfaces->surface(outer), "surface").sample(grid);  // positive inside
+    SignedDistance(surfaces->surface(outer), "surface")
+        .sample_band(grid, kExactBandSpacings * grid.spacing.maxCoeff());  // positive inside
   else
     sample_domain(domain, grid);
   return grid;

@@ -8,6 +8,8 @@
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -34,6 +36,10 @@ struct DistanceData {
 }  // namespace surface
 
 namespace {
+
+// Samples per brick side in sample_band: 512 samples per far query, bricks small enough
+// that a band a few samples wide leaves most of them far.
+constexpr Index kBrick = 8;
 
 surface::SurfaceGeometry geometry_of(TriSurface s, const std::string& name) {
   surface::SurfaceGeometry g;
@@ -95,6 +101,46 @@ void SignedDistance::sample(VoxelGrid& grid, const std::function<void(double)>& 
       if (progress) {
         const std::lock_guard lock(reporting);
         progress(static_cast<double>(++slices_done) / n[2]);
+      }
+    }
+  });
+}
+
+void SignedDistance::sample_band(VoxelGrid& grid, double band,
+                                 const std::function<void(double)>& progress) const {
+  const auto& n = grid.dims;
+  if (n[0] < 1 || n[1] < 1 || n[2] < 1 || !grid.origin.allFinite() || !grid.spacing.allFinite())
+    throw std::invalid_argument("SignedDistance::sample_band: dims < 1 or non-finite geometry");
+  if (!(band >= 0.0)) throw std::invalid_argument("SignedDistance::sample_band: band < 0");
+  grid.values.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0f);
+  const std::array<Index, 3> bricks{(n[0] + kBrick - 1) / kBrick, (n[1] + kBrick - 1) / kBrick,
+                                    (n[2] + kBrick - 1) / kBrick};
+  std::mutex reporting;
+  Index slabs_done = 0;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, bricks[2], 1), [&](const tbb::blocked_range<Index>& r) {
+    for (Index bk = r.begin(); bk != r.end(); ++bk) {
+      Index hint = kNoIndex;
+      for (Index bj = 0; bj < bricks[1]; ++bj)
+        for (Index bi = 0; bi < bricks[0]; ++bi) {
+          const std::array<Index, 3> lo{bi * kBrick, bj * kBrick, bk * kBrick};
+          std::array<Index, 3> hi{};
+          for (int a = 0; a < 3; ++a) hi[a] = std::min(lo[a] + kBrick, n[a]) - 1;
+          const Vec3 a = grid.point(lo[0], lo[1], lo[2]), b = grid.point(hi[0], hi[1], hi[2]);
+          const Vec3 centre = 0.5 * (a + b);
+          const double d = data_->at(centre, hint);
+          const bool far = std::abs(d) > band + 0.5 * (b - a).norm();
+          for (Index k = lo[2]; k <= hi[2]; ++k)
+            for (Index j = lo[1]; j <= hi[1]; ++j)
+              for (Index i = lo[0]; i <= hi[0]; ++i) {
+                const Vec3 p = grid.point(i, j, k);
+                const double v = far ? std::copysign(std::abs(d) - (p - centre).norm(), d)
+                                     : data_->at(p, hint);
+                grid.values[grid.index(i, j, k)] = static_cast<float>(v);
+              }
+        }
+      if (progress) {
+        const std::lock_guard lock(reporting);
+        progress(static_cast<double>(++slabs_done) / bricks[2]);
       }
     }
   });
