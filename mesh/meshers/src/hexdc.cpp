@@ -1,6 +1,6 @@
 // The dual-contouring hex mesher (volmesh/hexdc/dual_contouring.hpp): the domain's signed
-// distances on a (2^dim + 1)^3 grid, contoured at octree level --level, then given the buffer
-// layer (pillow.hpp) and smoothed (smoothing.hpp).
+// distances on a (2^dim + 1)^3 grid, contoured at octree level --level, refined locally where
+// asked (refine.hpp), then given the buffer layer (pillow.hpp) and smoothed (smoothing.hpp).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "hexdc_field.hpp"
+#include "hexdc_refine.hpp"
 #include "registration.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
@@ -86,6 +87,8 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
     throw InputError("hexdc: --level " + std::to_string(level) + " is deeper than --dim " +
                      std::to_string(depth) + " (at most --level " + std::to_string(depth) + ")");
 
+  const HexdcRefinement refinement = hexdc_refinement(request.options);
+
   const Clock::time_point sampling = Clock::now();
   const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level));
   const double field_seconds = seconds_since(sampling);
@@ -94,6 +97,10 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   HexdcStats stats;
   HexMesh hexes = to_hex_mesh(hexdc_uniform(field, level, &stats));
   const double contour_seconds = seconds_since(contouring);
+
+  const Clock::time_point refining = Clock::now();
+  const RefineStats refined = refine_hexdc(hexes, refinement);
+  const double refine_seconds = seconds_since(refining);
 
   // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
   // hexes it left failing, now that they are interior.
@@ -138,7 +145,9 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                {"max_quad_distortion_deg", f.max_quad_distortion_deg},
                {"field_seconds", field_seconds},
                {"contour_seconds", contour_seconds},
-               {"improve_seconds", improve_seconds}};
+               {"improve_seconds", improve_seconds},
+               {"refinement", refinement_summary(refined)},
+               {"refine_seconds", refine_seconds}};
   return r;
 }
 
@@ -152,7 +161,17 @@ const Registration registered{MesherInfo{
                          "grid domain's own k, else min(level + 2, 10))",
                  .type = OptionSpec::Type::integer,
                  .min = 2,
-                 .max = kHexdcMaxDepth}},
+                 .max = kHexdcMaxDepth},
+                {.name = "refine-boundary",
+                 .help = "split the N layers of hexes nearest the surface into 27 each, with "
+                         "Schneiders' transition templates around them (default 0: none)",
+                 .type = OptionSpec::Type::integer,
+                 .min = 0,
+                 .max = kMaxRefineLayers},
+                {.name = "refine-box",
+                 .help = "x0,y0,z0,x1,y1,z1: mark the nodes inside this box for refinement too "
+                         "(hexes with every corner marked split into 27)",
+                 .type = OptionSpec::Type::text}},
     .default_domain = "builtin:ball",
     .default_space = "q1",
     .run = mesh_hexdc,
