@@ -191,6 +191,48 @@ TEST(CliMesh, HexdcMeshesATriangulatedCubeToItsVolume) {
   EXPECT_NEAR(v.total_volume, kCubeVolume, kRelativeError * kCubeVolume);
 }
 
+// --refine-boundary 1 splits the hexes next to the surface into 27 before pillowing, with
+// transition templates inward; the result is still a valid conforming hex mesh.
+TEST(CliMesh, HexdcRefinesTheBoundaryLayer) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-refine");
+  const fs::path plain = dir / "plain.vtu", refined = dir / "refined.vtu";
+  const auto p = run_volmesh("mesh hexdc builtin:ball --level 3 --json -o " + plain.string(), dir);
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const auto r = run_volmesh(
+      "mesh hexdc builtin:ball --level 3 --refine-boundary 1 --json -o " + refined.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto jp = nlohmann::json::parse(p.out), jr = nlohmann::json::parse(r.out);
+  EXPECT_EQ(jp["refinement"]["marked_nodes"], 0);
+  EXPECT_EQ(jp["refinement"]["hexes_after"], jp["stages"]["uniform"]["cells"]);
+  EXPECT_FALSE(jp["stages"].contains("refined"));
+  const auto& refinement = jr["refinement"];
+  const auto& stages = jr["stages"];
+  EXPECT_EQ(refinement["hexes_before"], stages["uniform"]["cells"]);
+  EXPECT_EQ(refinement["hexes_after"], stages["refined"]["cells"]);
+  EXPECT_GT(refinement["hexes_by_template"]["full"].get<Index>(), 0);
+  EXPECT_GT(refinement["hexes_after"].get<Index>(), refinement["hexes_before"].get<Index>());
+  EXPECT_GT(jr["cells"].get<Index>(), jp["cells"].get<Index>());
+  EXPECT_EQ(stages["refined"]["degenerate_hexes"], 0);
+  EXPECT_EQ(stages["improved"]["degenerate_hexes"], 0);
+  EXPECT_GT(stages["improved"]["min_scaled_jacobian"].get<double>(), 0.0);
+  const ValidityReport v = check_validity(read_mesh(refined));
+  EXPECT_TRUE(v.valid());
+  EXPECT_NEAR(v.total_volume, check_validity(read_mesh(plain)).total_volume, 0.03);
+}
+
+TEST(CliMesh, HexdcRefusesABadRefineBoxWithOneLine) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-refine-bad");
+  const fs::path out = dir / "out.vtu";
+  for (const std::string box : {"0,0,0,1,1", "0,0,0,1,1,x", "1,0,0,0,1,1"}) {
+    const auto r = run_volmesh(
+        "mesh hexdc builtin:ball --level 3 --refine-box " + box + " -o " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 1) << box;
+    EXPECT_EQ(test::count_lines(r.err), 1) << box << ": " << r.err;
+    EXPECT_NE(r.err.find("--refine-box " + box + ": not six numbers"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << box;
+  }
+}
+
 TEST(CliMesh, HexdcRefusesBadLevelsAndFoldedHexesWithOneLine) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-bad");
   const fs::path out = dir / "out.vtu";

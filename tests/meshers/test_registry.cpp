@@ -35,6 +35,8 @@ OptionValue valid_value(const OptionSpec& spec) {
       return spec.max;
     case OptionSpec::Type::choice:
       return spec.choices.back();
+    case OptionSpec::Type::text:
+      return std::string("text");
   }
   return false;
 }
