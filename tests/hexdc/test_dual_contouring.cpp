@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <set>
 #include <string>
@@ -190,6 +191,30 @@ TEST(HexdcUniform, BadInputsThrowInputError) {
   expect_input_error(corner, 2,
                      "hexdc: no 2x2x2 block of neighbouring inside nodes at level 2; no hex to "
                      "build (try a finer level)");
+}
+
+// Two bars along z on 17^3 unit-spaced samples (level 4: one voxel per node), their hexes at
+// x, y in blocks 3..5 and 6..8: blocks (5, 5) and (6, 6) share an edge along z and nothing else,
+// so without repair four boundary quads would meet on each edge there, and its nodes would have
+// no inward direction. After the repair every boundary edge has exactly two quads.
+TEST(HexdcUniform, BarsMeetingAtAnEdgeAreMadeManifold) {
+  const auto in_bar = [](const Vec3& p, double lo, double hi) {
+    return p.x() > lo && p.x() < hi && p.y() > lo && p.y() < hi && p.z() > 3.5 && p.z() < 12.5;
+  };
+  const VoxelGrid grid = sample(kBoxDim, Vec3::Zero(), 1.0, [&](const Vec3& p) {
+    return in_bar(p, 3.5, 6.5) || in_bar(p, 6.5, 9.5) ? 1.0 : -1.0;
+  });
+  HexdcStats stats;
+  const HexMesh mesh = to_hex_mesh(hexdc_uniform(grid, 4, &stats));
+  EXPECT_GT(stats.nonmanifold_blocks_removed, 0);
+  std::map<std::pair<Index, Index>, int> quads_on_edge;
+  for (const auto& quad : mesh.boundary_faces)
+    for (std::size_t c = 0; c < 4; ++c) {
+      const Index a = quad[c], b = quad[(c + 1) % 4];
+      ++quads_on_edge[{std::min(a, b), std::max(a, b)}];
+    }
+  for (const auto& [edge, quads] : quads_on_edge) EXPECT_EQ(quads, 2);
+  EXPECT_TRUE(check_validity(to_poly_mesh(mesh)).valid());
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "volmesh/hexdc/dual_contouring.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <optional>
 #include <string>
 
 #include "node_crossings.hpp"
@@ -38,6 +40,100 @@ NodeKind classify_node(const VoxelGrid& field, const std::array<Index, 3>& lo, I
         (field.at(i, j, k) >= 0.0f ? any_inside : any_outside) = true;
   if (!any_inside) return NodeKind::outside;
   return any_outside ? NodeKind::boundary : NodeKind::interior;
+}
+
+
+// The 2x2x2 blocks of nodes, present where a hex is made.
+struct BlockSet {
+  Index per_axis = 0;
+  std::vector<char> present;
+  std::size_t id(Index i, Index j, Index k) const {
+    return static_cast<std::size_t>(i + per_axis * (j + per_axis * k));
+  }
+};
+
+// The eight blocks around a node are its octants, octant o = a + 2b + 4c at block offset
+// (a, b, c) - 1; two octants share a face when they differ in one bit.
+constexpr int kOctants = 8;
+
+// The face-connected components of the octants in `mask`, each as a mask, lowest octant first.
+std::vector<unsigned> octant_components(unsigned mask) {
+  std::vector<unsigned> components;
+  for (int o = 0; o < kOctants; ++o) {
+    const unsigned bit = 1u << o;
+    if (!(mask & bit)) continue;
+    unsigned component = bit;
+    for (unsigned grown = 0; grown != component;) {
+      grown = component;
+      for (int p = 0; p < kOctants; ++p)
+        if (grown & (1u << p))
+          for (int axis = 0; axis < 3; ++axis) component |= (1u << (p ^ (1 << axis))) & mask;
+    }
+    components.push_back(component);
+    mask &= ~component;
+  }
+  return components;
+}
+
+// The octants to remove at a node with present octants `filled` so that the boundary there is
+// a manifold: none when the present and the absent octants are each face-connected. Present
+// octants in several components (hexes meeting at an edge or a vertex only) keep the largest
+// component (the first of equals); absent octants in several (the outside pinched to a point or
+// an edge) are joined by removing the present octants on the path that flips the bits of the
+// first absent component's lowest octant toward the second's, x first.
+unsigned octants_to_remove(unsigned filled) {
+  constexpr unsigned kAll = (1u << kOctants) - 1;
+  const std::vector<unsigned> present = octant_components(filled);
+  if (present.size() > 1) {
+    const auto largest = std::max_element(
+        present.begin(), present.end(),
+        [](unsigned a, unsigned b) { return std::popcount(a) < std::popcount(b); });
+    return filled & ~*largest;
+  }
+  const std::vector<unsigned> absent = octant_components(kAll & ~filled);
+  if (absent.size() <= 1) return 0;
+  unsigned from = static_cast<unsigned>(std::countr_zero(absent[0]));
+  const auto to = static_cast<unsigned>(std::countr_zero(absent[1]));
+  unsigned removed = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    if ((from ^ to) & (1u << axis)) {
+      from ^= 1u << axis;
+      removed |= (1u << from) & filled;
+    }
+  return removed;
+}
+
+// Removes blocks until the boundary of the present ones is a manifold at every node, so that
+// each boundary node has one fan of boundary quads, a disc, and an inward direction (the
+// pillow layer and smoothing need one). Nodes are visited in index order until none changes,
+// which makes the result deterministic. Returns the blocks removed.
+Index make_manifold(BlockSet& blocks) {
+  const Index m = blocks.per_axis;
+  Index removed = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (Index k = 0; k <= m; ++k)
+      for (Index j = 0; j <= m; ++j)
+        for (Index i = 0; i <= m; ++i) {
+          // Octant (a, b, c) of node (i, j, k) is block (i - 1 + a, j - 1 + b, k - 1 + c).
+          const auto octant_block = [&](int o) -> std::optional<std::size_t> {
+            const Index bi = i - 1 + (o & 1), bj = j - 1 + ((o >> 1) & 1), bk = k - 1 + (o >> 2);
+            if (bi < 0 || bj < 0 || bk < 0 || bi >= m || bj >= m || bk >= m) return std::nullopt;
+            return blocks.id(bi, bj, bk);
+          };
+          unsigned filled = 0;
+          for (int o = 0; o < kOctants; ++o)
+            if (const auto b = octant_block(o); b && blocks.present[*b]) filled |= 1u << o;
+          const unsigned remove = octants_to_remove(filled);
+          for (int o = 0; o < kOctants; ++o)
+            if (remove & (1u << o)) {
+              blocks.present[*octant_block(o)] = 0;
+              ++removed;
+              changed = true;
+            }
+        }
+  }
+  return removed;
 }
 
 }  // namespace
@@ -84,20 +180,29 @@ PolyMesh hexdc_uniform(const VoxelGrid& field, int level, HexdcStats* stats) {
   // VTK corner c of the block at (i, j, k): offsets x, y as 0-3 counter-clockwise, z by c / 4.
   constexpr std::array<std::array<Index, 3>, 8> kCornerOffset{
       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+  const Index m = n - 1;  // blocks per axis
+  BlockSet blocks{m, std::vector<char>(static_cast<std::size_t>(m) * m * m, 0)};
+  for (Index k = 0; k < m; ++k)
+    for (Index j = 0; j < m; ++j)
+      for (Index i = 0; i < m; ++i)
+        blocks.present[blocks.id(i, j, k)] = std::all_of(
+            kCornerOffset.begin(), kCornerOffset.end(), [&](const std::array<Index, 3>& o) {
+              return vertex[node_id(i + o[0], j + o[1], k + o[2])] != kNoIndex;
+            });
+  s.nonmanifold_blocks_removed = make_manifold(blocks);
+
   std::vector<char> used(hexes.points.size(), 0);
-  for (Index k = 0; k + 1 < n; ++k)
-    for (Index j = 0; j + 1 < n; ++j)
-      for (Index i = 0; i + 1 < n; ++i) {
+  for (Index k = 0; k < m; ++k)
+    for (Index j = 0; j < m; ++j)
+      for (Index i = 0; i < m; ++i) {
+        if (!blocks.present[blocks.id(i, j, k)]) continue;
         std::array<Index, 8> cell{};
         std::array<Vec3, 8> corners;
-        bool complete = true;
-        for (std::size_t c = 0; c < 8 && complete; ++c) {
+        for (std::size_t c = 0; c < 8; ++c) {
           const auto& o = kCornerOffset[c];
           cell[c] = vertex[node_id(i + o[0], j + o[1], k + o[2])];
-          complete = cell[c] != kNoIndex;
-          if (complete) corners[c] = hexes.points[cell[c]];
+          corners[c] = hexes.points[cell[c]];
         }
-        if (!complete) continue;
         if (!hex_corner_tets_positive(corners)) ++s.invalid_hexes;
         for (const Index v : cell) used[v] = 1;
         hexes.cells.push_back(cell);

@@ -17,6 +17,7 @@
 #include "volmesh/hexdc/hex_mesh_stats.hpp"
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/smoothing.hpp"
+#include "volmesh/hexdc/untangle.hpp"
 
 namespace volmesh::meshers {
 
@@ -111,6 +112,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const Clock::time_point improving = Clock::now();
   const PillowStats pillow = pillow_boundary(hexes);
   const SmoothingStats smoothing = smooth_hexes(hexes);
+  untangle_hexes(hexes);
   const double improve_seconds = seconds_since(improving);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.

@@ -11,7 +11,13 @@
 //     every voxel edge in the node (linear interpolation of F along the edge; the normal is
 //     the central-difference gradient interpolated likewise, normalised).
 // Each 2x2x2 block of neighbouring nodes that all have vertices gives a hex, corners in VTK
-// order (x, then y, then z), so that a block of axis-aligned vertices has positive volume.
+// order (x, then y, then z), so that a block of axis-aligned vertices has positive volume,
+// except blocks left out so that the boundary is a manifold at every node: where hexes meet
+// at an edge or a vertex only, or the outside is pinched to an edge or a vertex (two sheets of
+// the surface in one node at a thin part), no boundary node has an inward direction that
+// the buffer layer could offset it along. Those hexes are removed at each such node (the
+// smaller of the hex groups meeting there, or those between the outside's parts), repeated
+// until every node is a manifold one.
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/core/voxel_grid.hpp"
 
@@ -25,6 +31,7 @@ struct HexdcStats {
   Index interior_vertices = 0;   // nodes with every sample >= 0
   Index boundary_vertices = 0;   // nodes with samples of both signs
   Index qef_fallbacks = 0;       // boundary vertices left at the mass point (solve_qef)
+  Index nonmanifold_blocks_removed = 0;  // blocks left out to keep the boundary a manifold
   Index unused_vertices = 0;     // vertices in no hex, left out of the mesh
   Index hexes = 0;
   Index invalid_hexes = 0;       // failing the ten corner tets (hex_corner_tets_positive)
