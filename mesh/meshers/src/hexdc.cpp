@@ -131,6 +131,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
   r.summary = {{"nodes_per_axis", stats.nodes_per_axis},
                {"samples_per_axis", field.dims[0]},
+               {"voxel_size", field.spacing.x()},
                {"field_seconds", field_seconds},
                {"interior_vertices", stats.interior_vertices},
                {"boundary_vertices", stats.boundary_vertices},
