@@ -99,7 +99,7 @@ template <class Slab>
 void for_each_slab(Index slabs, const std::function<void(double)>& progress, const Slab& slab) {
   std::mutex reporting;
   Index done = 0;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, slabs, 1), [&](const tbb::blocked_range<Index>& r) {
+  const auto run = [&](const tbb::blocked_range<Index>& r) {
     for (Index s = r.begin(); s != r.end(); ++s) {
       slab(s);
       if (progress) {
@@ -107,7 +107,8 @@ void for_each_slab(Index slabs, const std::function<void(double)>& progress, con
         progress(static_cast<double>(++done) / slabs);
       }
     }
-  });
+  };
+  tbb::parallel_for(tbb::blocked_range<Index>(0, slabs, 1), run);
 }
 
 }  // namespace
