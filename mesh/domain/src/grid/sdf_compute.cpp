@@ -74,6 +74,8 @@ double SignedDistance::operator()(const Vec3& p) const {
   return data_->at(p, hint);
 }
 
+Vec3 SignedDistance::closest_point(const Vec3& p) const { return data_->tree.closest(p).point; }
+
 Box3 SignedDistance::bounds() const { return surface::bounding_box(data_->geometry); }
 
 void SignedDistance::sample(VoxelGrid& grid, const std::function<void(double)>& progress) const {
