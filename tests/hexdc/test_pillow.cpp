@@ -18,6 +18,7 @@ namespace volmesh {
 namespace {
 
 using test_hexdc::corners_of;
+using test_hexdc::invalid_hexes;
 
 // The trilinear hex's volume: det J integrated by 2x2x2 Gauss points, exact since det J has degree
 // at most 2 in each reference coordinate. Neighbours share their bilinear faces, so the sum over a
@@ -50,13 +51,6 @@ double mesh_volume(const HexMesh& mesh) {
   double sum = 0.0;
   for (std::size_t h = 0; h < mesh.cells.size(); ++h) sum += hex_volume(corners_of(mesh, h));
   return sum;
-}
-
-Index invalid_hexes(const HexMesh& mesh) {
-  Index n = 0;
-  for (std::size_t h = 0; h < mesh.cells.size(); ++h)
-    n += hex_corner_tets_positive(corners_of(mesh, h)) ? 0 : 1;
-  return n;
 }
 
 // Per hex, how many of its faces are boundary quads.

@@ -1,5 +1,5 @@
-// The boundary refinement (project.hpp): boundary nodes end on the surface, creases and
-// corners stay where the QEF put them, and no hex is made invalid.
+// The boundary refinement (project.hpp): boundary nodes end on the surface, crease and corner
+// nodes on the creases and corners, and no hex is made invalid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +19,7 @@ namespace volmesh {
 namespace {
 
 using test_hexdc::corners_of;
+using test_hexdc::invalid_hexes;
 
 constexpr double kRadius = 0.8;   // of the sphere
 constexpr double kHalfSide = 0.55;  // of the box, off the grid's samples
@@ -38,13 +39,6 @@ std::vector<Index> boundary_nodes(const HexMesh& mesh) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
-}
-
-Index invalid_hexes(const HexMesh& mesh) {
-  Index n = 0;
-  for (std::size_t h = 0; h < mesh.cells.size(); ++h)
-    n += hex_corner_tets_positive(corners_of(mesh, h)) ? 0 : 1;
-  return n;
 }
 
 Vec3 closest_on_sphere(const Vec3& p) { return kRadius * p.normalized(); }
@@ -87,9 +81,9 @@ TEST(ProjectBoundary, SphereNodesEndOnTheSphereAndNoHexIsInvalid) {
 }
 
 // The QEF puts crease and corner vertices within a fraction of a voxel of the box's edges (the
-// central-difference normals blend the two faces' there); projection keeps them where they are
-// and puts every other boundary node on a face.
-TEST(ProjectBoundary, BoxEdgesAndCornersStayPut) {
+// central-difference normals blend the two faces' there); projection moves them onto the edges
+// and corners and every other boundary node onto a face.
+TEST(ProjectBoundary, BoxEdgeAndCornerNodesEndOnTheEdges) {
   const VoxelGrid field = test_fields::sample_paper_cube(box_distance);
   const double near_edge = 0.25 * field.spacing.x();
   HexMesh mesh = improved_mesh(field, 4);
@@ -97,20 +91,23 @@ TEST(ProjectBoundary, BoxEdgesAndCornersStayPut) {
   const ProjectStats stats = project_boundary(mesh, closest_on_box);
   EXPECT_EQ(invalid_hexes(mesh), 0);
   EXPECT_EQ(stats.held_back, 0);
-  Index on_edges = 0;
+  Index on_edges = 0, corners = 0;
   for (const Index v : boundary_nodes(mesh)) {
     const auto i = static_cast<std::size_t>(v);
-    // Two or three coordinates near the box's faces: an edge or a corner.
-    if (((before[i].cwiseAbs().array() - kHalfSide).abs() < near_edge).count() >= 2) {
-      ++on_edges;
-      EXPECT_EQ(mesh.points[i], before[i]) << v;
-    } else {
-      EXPECT_LT((closest_on_box(mesh.points[i]) - mesh.points[i]).norm(), 1e-9) << v;
-    }
+    const auto on_faces = [&](const Vec3& p, double tolerance) {
+      return ((p.cwiseAbs().array() - kHalfSide).abs() < tolerance).count();
+    };
+    EXPECT_LT((closest_on_box(mesh.points[i]) - mesh.points[i]).norm(), 1e-9) << v;
+    // Two or three coordinates near the box's faces: an edge or a corner node.
+    const auto sides = on_faces(before[i], near_edge);
+    if (sides < 2) continue;
+    ++on_edges;
+    corners += sides == 3 ? 1 : 0;
+    EXPECT_EQ(on_faces(mesh.points[i], 1e-9), sides) << v;
   }
-  EXPECT_GE(on_edges, 8);
+  EXPECT_EQ(corners, 8);
   EXPECT_EQ(stats.feature_nodes, on_edges);
-  EXPECT_LT(stats.max_feature_distance, near_edge);
+  EXPECT_LT(stats.max_feature_distance, 1e-9);
 }
 
 TEST(ProjectBoundary, RejectsBadOptions) {

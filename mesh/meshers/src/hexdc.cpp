@@ -105,7 +105,8 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const SmoothingStats smoothing = smooth_hexes(hexes);
   const double improve_seconds = seconds_since(improving);
 
-  // The paper's boundary refinement: boundary nodes onto the TRUE boundary, features kept.
+  // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
+  // nodes onto their features.
   const Clock::time_point projecting = Clock::now();
   const ProjectStats projection = project_boundary(hexes, hexdc_surface(domain));
   const double project_seconds = seconds_since(projecting);

@@ -5,10 +5,14 @@
 // Each boundary node (a node of mesh.boundary_faces) moves to the closest point of the surface,
 // which is a move along the surface normal there. Nodes on a crease or corner of the mesh
 // boundary (quad normals spread beyond the feature angle, as in smoothing.hpp and pillow.hpp)
-// stay where they are: the closest surface point of a point beside a convex edge lies on one of
-// the two faces, so projecting would round the edge off, whereas the QEF put the node at the
-// corner of the crossings' tangent planes, on the feature up to the field's error, and smoothing
-// and pillowing have kept it there.
+// cannot: the closest surface point of a point beside a convex edge lies on one of the two
+// faces, so projecting would round the edge off. Nor are they left where the QEF put them: its
+// crossings' normals come from central differences, which blend the two faces' near the edge,
+// and leave the vertex off it by a fraction of a voxel. A feature node moves instead to the
+// point nearest it on the surface's tangent planes beside it (one per quad,
+// through the closest point of a probe just inside the quad's centre, whose segment to it is
+// normal to the surface): two faces' planes meet in the crease, three in the corner. Feature
+// nodes move first in each pass, so that their neighbours are projected beside where they end.
 //
 // A move is accepted when every hex of the node passing the ten corner tets still does and the
 // least scaled Jacobian over its hexes stays at or above min(what it was, the floor); otherwise
@@ -30,7 +34,7 @@ namespace volmesh {
 using SurfaceProjector = std::function<Vec3(const Vec3&)>;
 
 struct ProjectOptions {
-  // As SmoothingOptions' and PillowOptions': boundary nodes beyond it are kept.
+  // As SmoothingOptions' and PillowOptions': boundary nodes beyond it are feature nodes.
   double feature_angle_deg = 40.0;
   // A move may lower the least scaled Jacobian of the node's hexes, but not below this (nor
   // below what it was, if that is lower).
@@ -45,11 +49,11 @@ struct ProjectOptions {
 struct ProjectStats {
   Index boundary_nodes = 0;
   Index projected = 0;      // non-feature nodes that end on the surface
-  Index feature_nodes = 0;  // crease and corner nodes, kept where they were
+  Index feature_nodes = 0;  // crease and corner nodes, moved onto the feature
   Index held_back = 0;      // non-feature nodes left off the surface (by the quality guard)
   double max_distance_before = 0.0;   // over the non-feature nodes, to their projection
   double max_distance_left = 0.0;     // the same after: over the held-back nodes
-  double max_feature_distance = 0.0;  // of the feature nodes to their projection
+  double max_feature_distance = 0.0;  // of the feature nodes to the surface, after
   double min_scaled_jacobian_before = 0.0, min_scaled_jacobian_after = 0.0;
   Index invalid_hexes_before = 0, invalid_hexes_after = 0;  // failing the ten corner tets
 };
