@@ -49,6 +49,7 @@ inline double mesh_volume(const HexMesh& mesh) {
   return sum;
 }
 
+// Hexes failing the ten corner tets.
 inline Index invalid_hexes(const HexMesh& mesh) {
   Index n = 0;
   for (std::size_t h = 0; h < mesh.cells.size(); ++h)

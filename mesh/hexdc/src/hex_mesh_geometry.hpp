@@ -20,6 +20,26 @@ inline std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
   return corners;
 }
 
+// Per node, the hexes having it as a corner, in hex order.
+inline std::vector<std::vector<Index>> hexes_of_nodes(const HexMesh& mesh) {
+  std::vector<std::vector<Index>> hexes(mesh.points.size());
+  for (Index h = 0; h < mesh.num_cells(); ++h)
+    for (const Index v : mesh.cells[static_cast<std::size_t>(h)]) {
+      auto& list = hexes[static_cast<std::size_t>(v)];
+      if (list.empty() || list.back() != h) list.push_back(h);
+    }
+  return hexes;
+}
+
+// Per node, the boundary quads having it as a corner, in quad order (empty off the boundary).
+inline std::vector<std::vector<Index>> boundary_quads_of_nodes(const HexMesh& mesh) {
+  std::vector<std::vector<Index>> quads(mesh.points.size());
+  for (std::size_t q = 0; q < mesh.boundary_faces.size(); ++q)
+    for (const Index v : mesh.boundary_faces[q])
+      quads[static_cast<std::size_t>(v)].push_back(static_cast<Index>(q));
+  return quads;
+}
+
 // Half the cross product of the diagonals: the quad's normal times its area, exact for a planar
 // quad, so that quads in an axis plane give an exactly axial normal.
 inline Vec3 quad_vector_area(const HexMesh& mesh, Index q) {

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "volmesh/domain/analytic.hpp"
+#include "volmesh/domain/analytic_closest.hpp"
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/domain/surface.hpp"
@@ -37,13 +39,18 @@ void resample(const SdfGridDomain& source, VoxelGrid& grid) {
     grid.values[s] = static_cast<float>(source.value(points[s]));
 }
 
-// The one outermost surface of a surface domain, or kNoIndex if there are several (disjoint
-// solids: their union's distance is not one surface's, so they take sample_domain's bound).
-// Inside the outermost surface is exactly region != 0, nested surfaces being interfaces.
-Index outermost(const SurfaceDomain& domain) {
-  const std::vector<Index>& depths = domain.depths();
-  if (std::count(depths.begin(), depths.end(), 0) != 1) return kNoIndex;
-  return static_cast<Index>(std::find(depths.begin(), depths.end(), 0) - depths.begin());
+// The exact signed distance of a domain of one analytic primitive: positive inside, which is
+// region != 0, the magnitude the distance to the primitive's closest surface point.
+void sample_primitive(const AnalyticDomain& domain, VoxelGrid& grid) {
+  const Primitive& primitive = domain.primitives().front();
+  const std::vector<Vec3> points = sample_points(grid);
+  std::vector<Index> region(points.size());
+  domain.region(points, region);
+  const double floor = kOutsideFloor * grid.spacing.minCoeff();
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    const double distance = (closest_surface_point(primitive, points[s]).point - points[s]).norm();
+    grid.values[s] = static_cast<float>(region[s] != 0 ? distance : -std::max(distance, floor));
+  }
 }
 
 // Sign from the regions, magnitude from the crossings of the grid edges whose ends differ.
@@ -88,6 +95,12 @@ void sample_domain(const Domain& domain, VoxelGrid& grid) {
 
 }  // namespace
 
+Index outermost_surface(const SurfaceDomain& domain) {
+  const std::vector<Index>& depths = domain.depths();
+  if (std::count(depths.begin(), depths.end(), 0) != 1) return kNoIndex;
+  return static_cast<Index>(std::find(depths.begin(), depths.end(), 0) - depths.begin());
+}
+
 double hexdc_margin(int level) {
   // m L >= (1 + 2 m) L / 2^level for a box of largest side L: m >= 1 / (2^level - 2).
   return (1.0 + kMarginSlack) / static_cast<double>((std::int64_t{1} << level) - 2);
@@ -101,12 +114,15 @@ VoxelGrid hexdc_field(const Domain& domain, int depth, double margin) {
   VoxelGrid grid = sdf_layout(domain.bounds(), dim, margin);
   grid.values.resize(static_cast<std::size_t>(dim) * dim * dim);
   const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain);
-  const Index outer = surfaces != nullptr ? outermost(*surfaces) : kNoIndex;
+  const Index outer = surfaces != nullptr ? outermost_surface(*surfaces) : kNoIndex;
+  const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain);
   if (sdf != nullptr)
     resample(*sdf, grid);
   else if (outer != kNoIndex)
     SignedDistance(surfaces->surface(outer), "surface")
         .sample_band(grid, kExactBandSpacings * grid.spacing.maxCoeff());  // positive inside
+  else if (analytic != nullptr && analytic->primitives().size() == 1)
+    sample_primitive(*analytic, grid);
   else
     sample_domain(domain, grid);
   return grid;

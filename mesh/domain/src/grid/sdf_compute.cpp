@@ -81,6 +81,8 @@ double SignedDistance::operator()(const Vec3& p) const {
   return data_->at(p, hint);
 }
 
+Vec3 SignedDistance::closest_point(const Vec3& p) const { return data_->tree.closest(p).point; }
+
 Box3 SignedDistance::bounds() const { return surface::bounding_box(data_->geometry); }
 
 namespace {

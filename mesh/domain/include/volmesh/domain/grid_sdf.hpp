@@ -38,6 +38,8 @@ class SignedDistance {
   // Exact up to the rounding of the point-triangle distance (an absolute error of about
   // 1e-16 of the coordinates' magnitude).
   double operator()(const Vec3& p) const;
+  // The closest point of the triangles to p, exact as operator() is.
+  Vec3 closest_point(const Vec3& p) const;
   Box3 bounds() const;  // of the triangles
 
   // Fills grid.values from dims, origin and spacing, on every core. The values depend only
