@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include "volmesh/domain/analytic.hpp"
 #include "volmesh/domain/analytic_closest.hpp"
 #include "volmesh/domain/grid.hpp"
@@ -24,44 +26,68 @@ constexpr double kExactBandSpacings = 3.0;
 // An outside sample on the surface stays below zero (F >= 0 is inside), by this many spacings.
 constexpr double kOutsideFloor = 1e-6;
 
-std::vector<Vec3> sample_points(const VoxelGrid& grid) {
+// The samples of plane k (x fastest): the field is computed a plane at a time, so that no
+// array of the grid's size holds more than its values (a 1025^3 grid has 4 GB of them).
+std::vector<Vec3> plane_points(const VoxelGrid& grid, Index k) {
   std::vector<Vec3> points;
-  points.reserve(grid.values.size());
-  for (Index k = 0; k < grid.dims[2]; ++k)
-    for (Index j = 0; j < grid.dims[1]; ++j)
-      for (Index i = 0; i < grid.dims[0]; ++i) points.push_back(grid.point(i, j, k));
+  points.reserve(static_cast<std::size_t>(grid.dims[0]) * grid.dims[1]);
+  for (Index j = 0; j < grid.dims[1]; ++j)
+    for (Index i = 0; i < grid.dims[0]; ++i) points.push_back(grid.point(i, j, k));
   return points;
 }
 
+std::size_t plane_size(const VoxelGrid& grid) {
+  return static_cast<std::size_t>(grid.dims[0]) * static_cast<std::size_t>(grid.dims[1]);
+}
+
 void resample(const SdfGridDomain& source, VoxelGrid& grid) {
-  const std::vector<Vec3> points = sample_points(grid);
-  for (std::size_t s = 0; s < points.size(); ++s)
-    grid.values[s] = static_cast<float>(source.value(points[s]));
+  tbb::parallel_for(Index{0}, grid.dims[2], [&](Index k) {
+    const std::vector<Vec3> points = plane_points(grid, k);
+    const std::size_t first = k * plane_size(grid);
+    for (std::size_t s = 0; s < points.size(); ++s)
+      grid.values[first + s] = static_cast<float>(source.value(points[s]));
+  });
 }
 
 // The exact signed distance of a domain of one analytic primitive: positive inside, which is
 // region != 0, the magnitude the distance to the primitive's closest surface point.
 void sample_primitive(const AnalyticDomain& domain, VoxelGrid& grid) {
   const Primitive& primitive = domain.primitives().front();
-  const std::vector<Vec3> points = sample_points(grid);
-  std::vector<Index> region(points.size());
-  domain.region(points, region);
   const double floor = kOutsideFloor * grid.spacing.minCoeff();
-  for (std::size_t s = 0; s < points.size(); ++s) {
-    const double distance = (closest_surface_point(primitive, points[s]).point - points[s]).norm();
-    grid.values[s] = static_cast<float>(region[s] != 0 ? distance : -std::max(distance, floor));
+  std::vector<Index> region(plane_size(grid));
+  for (Index k = 0; k < grid.dims[2]; ++k) {
+    const std::vector<Vec3> points = plane_points(grid, k);
+    domain.region(points, region);
+    const std::size_t first = k * plane_size(grid);
+    tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t s) {
+      const double distance = (closest_surface_point(primitive, points[s]).point - points[s]).norm();
+      grid.values[first + s] =
+          static_cast<float>(region[s] != 0 ? distance : -std::max(distance, floor));
+    });
   }
 }
 
-// Sign from the regions, magnitude from the crossings of the grid edges whose ends differ.
+// Sign from the regions, magnitude from the crossings of the grid edges whose ends differ,
+// one spacing where none of a sample's edges is crossed.
 void sample_domain(const Domain& domain, VoxelGrid& grid) {
-  const std::vector<Vec3> points = sample_points(grid);
-  std::vector<Index> region(points.size());
-  domain.region(points, region);
+  const std::size_t plane = plane_size(grid);
+  std::vector<std::uint8_t> inside(grid.values.size());
+  std::vector<Index> region(plane);
+  for (Index k = 0; k < grid.dims[2]; ++k) {
+    domain.region(plane_points(grid, k), region);
+    for (std::size_t s = 0; s < plane; ++s) inside[k * plane + s] = region[s] != 0;
+  }
+  const auto spacing = static_cast<float>(grid.spacing.minCoeff());
+  std::fill(grid.values.begin(), grid.values.end(), spacing);  // the magnitude, for now
 
+  // Plane k's edges along x and y, and those along z up to plane k + 1.
   std::vector<Vec3> a, b;
   std::vector<std::array<std::int64_t, 2>> ends;  // the samples at a and b
-  for (Index k = 0; k < grid.dims[2]; ++k)
+  std::vector<std::vector<Crossing>> hits;
+  for (Index k = 0; k < grid.dims[2]; ++k) {
+    a.clear();
+    b.clear();
+    ends.clear();
     for (Index j = 0; j < grid.dims[1]; ++j)
       for (Index i = 0; i < grid.dims[0]; ++i) {
         const std::array<Index, 3> at{i, j, k};
@@ -70,27 +96,25 @@ void sample_domain(const Domain& domain, VoxelGrid& grid) {
           std::array<Index, 3> next = at;
           ++next[axis];
           const std::int64_t s = grid.index(i, j, k), t = grid.index(next[0], next[1], next[2]);
-          if ((region[s] != 0) == (region[t] != 0)) continue;
-          a.push_back(points[s]);
-          b.push_back(points[t]);
+          if (inside[s] == inside[t]) continue;
+          a.push_back(grid.point(i, j, k));
+          b.push_back(grid.point(next[0], next[1], next[2]));
           ends.push_back({s, t});
         }
       }
-  std::vector<std::vector<Crossing>> hits;
-  domain.crossings(a, b, hits);
-
-  std::vector<double> distance(points.size(), grid.spacing.minCoeff());
-  for (std::size_t e = 0; e < ends.size(); ++e) {
-    if (hits[e].empty()) continue;
-    const double length = (b[e] - a[e]).norm();
-    auto& [s, t] = ends[e];
-    distance[s] = std::min(distance[s], hits[e].front().t * length);
-    distance[t] = std::min(distance[t], (1.0 - hits[e].back().t) * length);
+    domain.crossings(a, b, hits);
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      if (hits[e].empty()) continue;
+      const double length = (b[e] - a[e]).norm();
+      auto& [s, t] = ends[e];
+      grid.values[s] = std::min(grid.values[s], static_cast<float>(hits[e].front().t * length));
+      grid.values[t] =
+          std::min(grid.values[t], static_cast<float>((1.0 - hits[e].back().t) * length));
+    }
   }
-  const double floor = kOutsideFloor * grid.spacing.minCoeff();
-  for (std::size_t s = 0; s < points.size(); ++s)
-    grid.values[s] = static_cast<float>(region[s] != 0 ? distance[s]
-                                                       : -std::max(distance[s], floor));
+  const auto floor = static_cast<float>(kOutsideFloor * grid.spacing.minCoeff());
+  for (std::size_t s = 0; s < grid.values.size(); ++s)
+    grid.values[s] = inside[s] != 0 ? grid.values[s] : -std::max(grid.values[s], floor);
 }
 
 }  // namespace
