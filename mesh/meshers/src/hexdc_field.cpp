@@ -60,7 +60,8 @@ void sample_primitive(const AnalyticDomain& domain, VoxelGrid& grid) {
     domain.region(points, region);
     const std::size_t first = k * plane_size(grid);
     tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t s) {
-      const double distance = (closest_surface_point(primitive, points[s]).point - points[s]).norm();
+      const Vec3& p = points[s];
+      const double distance = (closest_surface_point(primitive, p).point - p).norm();
       grid.values[first + s] =
           static_cast<float>(region[s] != 0 ? distance : -std::max(distance, floor));
     });
