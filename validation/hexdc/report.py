@@ -49,8 +49,6 @@ QUAD_DISTORTION_TARGET = 85.6   # the paper's best (Table 1)
 VOLUME_TARGET = 0.02            # at the finer level
 HAUSDORFF_VOXELS_TARGET = 1.0
 SNAPPY_SPEEDUP_TARGET = 10.0
-MARGIN_SLACK = 1e-3             # hexdc_field.cpp's kMarginSlack: the grid's margin
-BUILTIN_SIDE = {"builtin:ball": 2.0, "builtin:box": 1.0}  # longest side of their boxes
 DASH = "—"
 
 
@@ -97,61 +95,19 @@ def valence_text(valence):
 
 
 def stage(run, name):
-    """One of the mesher's stages (uniform, improved, refined, ...) as a dict of the paper's
-    figures: the "stages" object where the summary has one, else what its flat keys give."""
-    stages = run.get("stages") or {}
-    if name in stages:
-        return stages[name]
-    if name == "uniform" and "hexes" in run:
-        nodes = None
-        if "interior_vertices" in run and "boundary_vertices" in run:
-            nodes = run["interior_vertices"] + run["boundary_vertices"]
-        return {"nodes": nodes, "cells": run.get("hexes"),
-                "degenerate_hexes": run.get("invalid_before_pillow"),
-                "min_scaled_jacobian": run.get("min_scaled_jacobian_before_pillow"),
-                "seconds": run.get("contour_seconds")}
-    if name == "improved" and "cells" in run:
-        return {"nodes": run.get("vertices"), "cells": run.get("cells"),
-                "max_quad_distortion_deg": run.get("max_quad_distortion_deg"),
-                "degenerate_hexes": run.get("invalid_by_corner_tets"),
-                "min_scaled_jacobian": run.get("min_scaled_jacobian"),
-                "mean_scaled_jacobian": run.get("mean_scaled_jacobian"),
-                "seconds": run.get("improve_seconds")}
-    return {}
+    """One of the mesher's stages (uniform, refined, improved) as a dict of the paper's
+    figures; empty for a run that made no mesh or has no such stage."""
+    return (run.get("stages") or {}).get(name, {})
 
 
 def final_stage(run):
-    """The figures of the mesh the mesher wrote: its last stage."""
-    stages = run.get("stages") or {}
-    if stages:
-        return stages[list(stages)[-1]]
+    """The figures of the mesh the mesher wrote."""
     return stage(run, "improved")
 
 
-def off_side(path):
-    """Longest side of an OFF surface's bounding box."""
-    lines = [l.split("#")[0].split() for l in Path(path).read_text().splitlines()]
-    lines = [l for l in lines if l]
-    first = 1 if lines[0][0].endswith("OFF") else 0
-    head = lines[first] if first == 1 and len(lines[0]) == 1 else lines[0][1:] if first else lines[0]
-    if first == 1 and len(lines[0]) > 1:
-        first = 0
-    nv = int(head[0])
-    v = [tuple(map(float, l[:3])) for l in lines[first + 1:first + 1 + nv]]
-    return max(max(p[a] for p in v) - min(p[a] for p in v) for a in range(3))
-
-
-def voxel_size(run, side, level):
-    """The field's sample spacing: the summary's where it has one, else sdf_layout's rule (the
-    box's longest side with hexdc_margin on either end over samples - 1)."""
-    for key in ("voxel_size", "spacing"):
-        if isinstance(run.get(key), (int, float)):
-            return run[key]
-    samples = run.get("samples_per_axis")
-    if not samples or side is None:
-        return None
-    margin = (1.0 + MARGIN_SLACK) / (2 ** level - 2)
-    return side * (1.0 + 2.0 * margin) / (samples - 1)
+def voxel_size(run):
+    """The field's sample spacing, None for a run that made no mesh."""
+    return run.get("voxel_size")
 
 
 def edge_in_voxels(value, voxel):
@@ -238,8 +194,6 @@ def paired_table(columns, ours):
 def table1(out, build, run_name, refined_name, title, layers):
     run = load_json(out / f"{run_name}.json") or {"exit": "not run"}
     refined = load_json(out / f"{refined_name}.json") or {"exit": "not run"}
-    side = BUILTIN_SIDE.get(title.split()[0])
-    level = int(re.search(r"--level (\d+)", title).group(1))
     print(f"Ours: `{title}`; the refined column adds `--refine-boundary {layers}` "
           "(Schneiders' 27-cell templates on the hexes next to the boundary). Edges in voxels "
           "of the 65³ field, as the paper's. The paper's uniform mesh had 55 degenerate hexes; "
@@ -253,10 +207,9 @@ def table1(out, build, run_name, refined_name, title, layers):
             reason = source["exit"] if isinstance(source["exit"], str) else refusal(out, name)
             stages.append((label, {}, reason))
             continue
-        s = stage(source, key) if key != "refined" else (stage(source, "refined")
-                                                        or final_stage(source))
+        s = stage(source, key)
         stages.append((label, s, None))
-    voxel = voxel_size(run, side, level) if "exit" not in run else None
+    voxel = voxel_size(run)
     ours = [stage_cells(s, voxel) for _, s, _ in stages]
     paired_table([(label, PAPER_TABLE1[label]) for label, _, _ in stages], ours)
     extra = [["min scaled Jacobian"] + [fmt(s.get("min_scaled_jacobian"), ".3f") for _, s, _ in stages],
@@ -287,7 +240,7 @@ def table2(out, build, meshes, level, surfaces):
             s, voxel = {}, None
         else:
             s = final_stage(run)
-            voxel = voxel_size(run, off_side(meshes / f"{surface}.off"), int(level))
+            voxel = voxel_size(run)
         ours.append(stage_cells(s, voxel))
         rows.append({"surface": surface, **{k: s.get(k) for k in STAGE_KEYS}})
     header = ["figure"] + [f"{r} (paper)" for r in PAPER_TABLE2] + list(surfaces)
@@ -297,7 +250,7 @@ def table2(out, build, meshes, level, surfaces):
     write_rows(build, "table2", rows)
 
 
-def sweep_row(out, meshes, surface, level, sides):
+def sweep_row(out, surface, level):
     name = f"{surface}-l{level}"
     run = load_json(out / f"{name}.json")
     if run is None:
@@ -318,23 +271,20 @@ def sweep_row(out, meshes, surface, level, sides):
         else:
             row["status"] = "not closed" if f"{surface}.off:" in message else "failed"
         return row
-    if surface not in sides:
-        sides[surface] = off_side(meshes / f"{surface}.off")
     f = final_stage(run)
     check = load_json(out / f"{name}.check.json") or {}
     quality = check.get("quality", {})
     sj = quality.get("metrics", {}).get("hex_scaled_jacobian", {})
     distance = check.get("surface", {})
-    row["hexes"] = first(f.get("cells"), run.get("cells"))
-    row["invalid_10tet"] = first(f.get("degenerate_hexes"), run.get("invalid_by_corner_tets"))
+    row["hexes"] = f.get("cells")
+    row["invalid_10tet"] = f.get("degenerate_hexes")
     row["inverted"] = quality.get("inverted_hexes")
     row["min_sj"] = first(f.get("min_scaled_jacobian"), sj.get("min"))
     row["mean_sj"] = first(f.get("mean_scaled_jacobian"), sj.get("mean"))
-    row["max_quad_distortion_deg"] = first(f.get("max_quad_distortion_deg"),
-                                           run.get("max_quad_distortion_deg"))
+    row["max_quad_distortion_deg"] = f.get("max_quad_distortion_deg")
     row["volume_error"] = distance.get("volume_error")
     row["hausdorff"] = distance.get("hausdorff")
-    row["voxel"] = voxel_size(run, sides[surface], level)
+    row["voxel"] = voxel_size(run)
     if row["hausdorff"] is not None and row["voxel"]:
         row["hausdorff_voxels"] = row["hausdorff"] / row["voxel"]
     row["seconds"] = run.get("time_seconds", wall)
@@ -371,11 +321,10 @@ SWEEP_HEADER = ["surface", "level", "status", "hexes", "fail 10 tets", "SJ < 0",
 def sweep(out, build, meshes, levels, named):
     levels = [int(l) for l in levels.split(",")]
     surfaces = (out / "sweep.surfaces").read_text().split()
-    sides = {}  # surface -> longest side of its box
     rows = []
     for surface in surfaces:
         for level in levels:
-            row = sweep_row(out, meshes, surface, level, sides)
+            row = sweep_row(out, surface, level)
             if row:
                 rows.append(row)
     finer = max(levels)

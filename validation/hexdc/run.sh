@@ -81,13 +81,9 @@ if has_part paper; then
     echo "hexdc $PAPER_FIELD --dim $PAPER_DIM --level $l"
     hexdc "paper-l$l" "$PAPER_FIELD" "$l" "$OUT/paper-l$l.foam/" --dim "$PAPER_DIM"
   done
-  if "$VOLMESH" mesh hexdc --help | grep -q -- --refine-boundary; then
-    echo "hexdc $PAPER_FIELD --dim $PAPER_DIM --level $TABLE1_LEVEL --refine-boundary $REFINE_LAYERS"
-    hexdc paper-refined "$PAPER_FIELD" "$TABLE1_LEVEL" "$OUT/paper-refined.vtu" \
-      --dim "$PAPER_DIM" --refine-boundary "$REFINE_LAYERS"
-  else
-    echo '{"exit": "no --refine-boundary option"}' > "$OUT/paper-refined.json"
-  fi
+  echo "hexdc $PAPER_FIELD --dim $PAPER_DIM --level $TABLE1_LEVEL --refine-boundary $REFINE_LAYERS"
+  hexdc paper-refined "$PAPER_FIELD" "$TABLE1_LEVEL" "$OUT/paper-refined.vtu" \
+    --dim "$PAPER_DIM" --refine-boundary "$REFINE_LAYERS"
 fi
 
 if has_part sweep; then
