@@ -195,13 +195,14 @@ def table1(out, build, run_name, refined_name, title, layers):
     run = load_json(out / f"{run_name}.json") or {"exit": "not run"}
     refined = load_json(out / f"{refined_name}.json") or {"exit": "not run"}
     print(f"Ours: `{title}`; the refined column adds `--refine-boundary {layers}` "
-          "(Schneiders' 27-cell templates on the hexes next to the boundary). Edges in voxels "
+          "(Schneiders' 27-cell templates on the hexes next to the boundary, before the buffer "
+          "layer and smoothing; the column is the final mesh). Edges in voxels "
           "of the 65³ field, as the paper's. The paper's uniform mesh had 55 degenerate hexes; "
           "hexdc refuses to write a mesh with any, so its uniform column is the mesh before the "
           "buffer layer and smoothing.\n")
     stages = []
     for label, source, key in (("uniform", run, "uniform"), ("improved", run, "improved"),
-                               ("refined", refined, "refined")):
+                               ("refined", refined, "improved")):
         if "exit" in source:
             name = refined_name if label == "refined" else run_name
             reason = source["exit"] if isinstance(source["exit"], str) else refusal(out, name)
