@@ -128,6 +128,7 @@ TEST(UntangleHexes, RejectsBadOptions) {
   EXPECT_THROW(untangle_hexes(mesh, {.target_quality = 0.0}), InputError);
   EXPECT_THROW(untangle_hexes(mesh, {.sweeps = -1}), InputError);
   EXPECT_THROW(untangle_hexes(mesh, {.initial_step = 0.1, .final_step = 0.2}), InputError);
+  EXPECT_THROW(untangle_hexes(mesh, {.feature_angle_deg = 200.0}), InputError);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #pragma once
-// Geometry of a HexMesh's hexes and boundary quads shared by smoothing and pillowing.
+// Geometry of a HexMesh's hexes and boundary quads shared by smoothing, untangling, pillowing
+// and projection.
 #include <algorithm>
 #include <array>
 #include <vector>
 
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/hexdc/hex_quality.hpp"
 
 namespace volmesh::hexdc_detail {
 
@@ -18,6 +20,32 @@ inline std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
   const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
   for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[static_cast<std::size_t>(cell[c])];
   return corners;
+}
+
+// Per hex of the mesh as it is now: a quality measure and whether it passes the ten corner tets.
+struct HexState {
+  std::vector<double> quality;
+  std::vector<bool> valid;
+};
+
+// The state of every hex, its quality by `measure` (a function of the 8 corners).
+template <class Measure>
+HexState hex_state(const HexMesh& mesh, Measure measure) {
+  HexState state;
+  for (Index h = 0; h < mesh.num_cells(); ++h) {
+    const auto corners = hex_corners(mesh, h);
+    state.quality.push_back(measure(corners));
+    state.valid.push_back(hex_corner_tets_positive(corners));
+  }
+  return state;
+}
+
+inline double least_quality(const HexState& state) {
+  return *std::min_element(state.quality.begin(), state.quality.end());
+}
+
+inline Index invalid_count(const HexState& state) {
+  return static_cast<Index>(std::count(state.valid.begin(), state.valid.end(), false));
 }
 
 // Per node, the hexes having it as a corner, in hex order.

@@ -69,37 +69,13 @@ Vec3 laplacian_step(const HexMesh& mesh, const NodeLinks& links, std::size_t v) 
   return step - step.dot(normal) * normal;
 }
 
-// Per hex of the mesh as it is now: its scaled Jacobian and corner-tet validity.
-struct HexState {
-  std::vector<double> scaled_jacobian;
-  std::vector<bool> valid;
-};
-
-HexState hex_state(const HexMesh& mesh) {
-  HexState state;
-  for (Index h = 0; h < mesh.num_cells(); ++h) {
-    const auto corners = hex_corners(mesh, h);
-    state.scaled_jacobian.push_back(hex_scaled_jacobian(corners));
-    state.valid.push_back(hex_corner_tets_positive(corners));
-  }
-  return state;
-}
-
-double min_scaled_jacobian(const HexState& state) {
-  return *std::min_element(state.scaled_jacobian.begin(), state.scaled_jacobian.end());
-}
-
-Index invalid_count(const HexState& state) {
-  return static_cast<Index>(std::count(state.valid.begin(), state.valid.end(), false));
-}
-
 // Moves node v to `target` if none of its hexes gets worse (see the header), updating `state`;
 // otherwise restores it.
 bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, const Vec3& target,
               HexState& state) {
   double old_min = std::numeric_limits<double>::infinity();
   for (const Index h : hexes)
-    old_min = std::min(old_min, state.scaled_jacobian[static_cast<std::size_t>(h)]);
+    old_min = std::min(old_min, state.quality[static_cast<std::size_t>(h)]);
   const Vec3 old_point = mesh.points[v];
   mesh.points[v] = target;
   std::vector<double> new_sj;
@@ -116,7 +92,7 @@ bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, con
   }
   for (std::size_t i = 0; i < hexes.size(); ++i) {
     const auto h = static_cast<std::size_t>(hexes[i]);
-    state.scaled_jacobian[h] = new_sj[i];
+    state.quality[h] = new_sj[i];
     state.valid[h] = new_valid[i];
   }
   return true;
@@ -138,8 +114,8 @@ SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
     movable[v] = !links.hexes[v].empty() &&
                  (links.quads[v].empty() || !on_feature(mesh, links.quads[v], cos_feature));
 
-  HexState state = hex_state(mesh);
-  stats.min_scaled_jacobian_before = min_scaled_jacobian(state);
+  HexState state = hex_state(mesh, hex_scaled_jacobian);
+  stats.min_scaled_jacobian_before = least_quality(state);
   stats.invalid_hexes_before = invalid_count(state);
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     Index moved = 0;
@@ -157,10 +133,10 @@ SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
       moved += accepted ? 1 : 0;
     }
     ++stats.sweeps;
-    stats.min_scaled_jacobian_per_sweep.push_back(min_scaled_jacobian(state));
+    stats.min_scaled_jacobian_per_sweep.push_back(least_quality(state));
     if (moved == 0) break;
   }
-  stats.min_scaled_jacobian_after = min_scaled_jacobian(state);
+  stats.min_scaled_jacobian_after = least_quality(state);
   stats.invalid_hexes_after = invalid_count(state);
   return stats;
 }

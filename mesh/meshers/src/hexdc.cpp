@@ -1,7 +1,8 @@
 // The dual-contouring hex mesher (volmesh/hexdc/dual_contouring.hpp): the domain's signed
 // distances on a (2^dim + 1)^3 grid, contoured at octree level --level, refined locally where
-// asked (refine.hpp), given the buffer layer (pillow.hpp), smoothed (smoothing.hpp, untangle.hpp)
-// and its boundary projected onto the domain's surface (project.hpp).
+// asked (refine.hpp), given the buffer layer (pillow.hpp), smoothed (smoothing.hpp, untangle.hpp),
+// its boundary projected onto the domain's surface (project.hpp) and its worst hexes optimised
+// again with the boundary nodes sliding on that surface (untangle.hpp).
 #include <algorithm>
 #include <chrono>
 #include <optional>
@@ -33,6 +34,11 @@ constexpr int kMinLevel = 2;
 // The default grid has 2^2 voxels per node side: enough crossings for each boundary node's
 // QEF to see the surface's curvature, at 64 samples per node.
 constexpr int kDefaultVoxelsLog2 = 2;
+
+// The hexes whose nodes are optimised again after projection, boundary nodes on the surface: the
+// least scaled Jacobian the issue asks of every hex, as ProjectOptions' floor. Fewer hexes than
+// untangle_hexes' default target leave the boundary nodes fewer moves to spend on the rest.
+constexpr double kSurfaceUntangleTarget = 0.3;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -121,7 +127,12 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
   // nodes onto their features.
   const Clock::time_point projecting = Clock::now();
-  const ProjectStats projection = project_boundary(hexes, hexdc_surface(domain));
+  const SurfaceProjector surface = hexdc_surface(domain);
+  const ProjectStats projection = project_boundary(hexes, surface);
+  // Projection fixes the buffer hexes' outer quads where it put them: the worst hexes are
+  // optimised again with the boundary nodes free to slide on the surface.
+  const UntangleStats surface_untangling =
+      untangle_hexes(hexes, {.target_quality = kSurfaceUntangleTarget}, surface);
   const double project_seconds = seconds_since(projecting);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
@@ -158,7 +169,11 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                 {{"sweeps", untangling.sweeps},
                  {"moves", untangling.moves_accepted},
                  {"degenerate_before", untangling.invalid_hexes_before},
-                 {"degenerate_after", untangling.invalid_hexes_after}}},
+                 {"degenerate_after", untangling.invalid_hexes_after},
+                 {"on_surface_sweeps", surface_untangling.sweeps},
+                 {"on_surface_moves", surface_untangling.moves_accepted},
+                 {"on_surface_features_released", surface_untangling.features_released},
+                 {"on_surface_degenerate_after", surface_untangling.invalid_hexes_after}}},
                {"refinement", refinement_summary(refined)},
                {"projection",
                 {{"nodes_projected", projection.projected},

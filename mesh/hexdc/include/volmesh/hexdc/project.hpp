@@ -24,14 +24,10 @@
 // boundary, features kept, no hex made worse) repairs the hexes the projection distorted; the
 // next pass takes the nodes its tangent moves lifted off a curved surface back onto it, so the
 // last word is a projection.
-#include <functional>
-
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/hexdc/surface_projector.hpp"
 
 namespace volmesh {
-
-// The closest point of the surface to a point.
-using SurfaceProjector = std::function<Vec3(const Vec3&)>;
 
 struct ProjectOptions {
   // As SmoothingOptions' and PillowOptions': boundary nodes beyond it are feature nodes.
