@@ -96,7 +96,11 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                      ") give at most --level " + std::to_string(depth));
 
   const HexdcRefinement refinement = hexdc_refinement(request.options);
+  const auto progress = [&](const char* stage, double fraction) {
+    if (request.progress) request.progress(stage, fraction);
+  };
 
+  progress("signed distances", 0.0);
   const Clock::time_point sampling = Clock::now();
   const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level));
   const double field_seconds = seconds_since(sampling);
@@ -104,12 +108,14 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
     throw InputError(request.domain_name +
                      ": no sample of the signed distance is >= 0: nothing is inside");
 
+  progress("dual contouring", 0.2);
   const Clock::time_point contouring = Clock::now();
   HexdcStats stats;
   HexMesh hexes = to_hex_mesh(hexdc_uniform(field, level, &stats));
   const double contour_seconds = seconds_since(contouring);
   const HexMeshStats uniform = hex_mesh_stats(hexes);
 
+  progress("refinement", 0.3);
   const Clock::time_point refining = Clock::now();
   const RefineStats refined = refine_hexdc(hexes, refinement);
   const double refine_seconds = seconds_since(refining);
@@ -118,17 +124,22 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
 
   // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
   // hexes it left failing, now that they are interior.
+  progress("buffer layer", 0.35);
   const Clock::time_point improving = Clock::now();
   const PillowStats pillow = pillow_boundary(hexes);
+  progress("smoothing", 0.4);
   const SmoothingStats smoothing = smooth_hexes(hexes);
+  progress("untangling", 0.55);
   const UntangleStats untangling = untangle_hexes(hexes);
   const double improve_seconds = seconds_since(improving);
 
   // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
   // nodes onto their features.
+  progress("projection", 0.65);
   const Clock::time_point projecting = Clock::now();
   const SurfaceProjector surface = hexdc_surface(domain);
   const ProjectStats projection = project_boundary(hexes, surface);
+  progress("untangling on the surface", 0.85);
   // Projection fixes the buffer hexes' outer quads where it put them: the worst hexes are
   // optimised again with the boundary nodes free to slide on the surface.
   const UntangleStats surface_untangling =
@@ -136,6 +147,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const double project_seconds = seconds_since(projecting);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
+  progress("corner tets", 0.95);
   const HexMeshStats improved = hex_mesh_stats(hexes);
   if (improved.degenerate > 0) {
     const Vec3& c = improved.first_degenerate_centre;
