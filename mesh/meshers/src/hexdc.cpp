@@ -4,7 +4,6 @@
 // its boundary projected onto the domain's surface (project.hpp) and its worst hexes optimised
 // again with the boundary nodes sliding on that surface (untangle.hpp).
 #include <algorithm>
-#include <chrono>
 #include <optional>
 #include <sstream>
 
@@ -14,6 +13,7 @@
 #include "registration.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
@@ -27,8 +27,6 @@ namespace volmesh::meshers {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // One node of margin around the domain needs 2^level >= 4 nodes per axis (hexdc_margin).
 constexpr int kMinLevel = 2;
 // The default grid has 2^2 voxels per node side: enough crossings for each boundary node's
@@ -39,10 +37,6 @@ constexpr int kDefaultVoxelsLog2 = 2;
 // least scaled Jacobian the issue asks of every hex, as ProjectOptions' floor. Fewer hexes than
 // untangle_hexes' default target leave the boundary nodes fewer moves to spend on the rest.
 constexpr double kSurfaceUntangleTarget = 0.3;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // k of a signed-distance grid domain whose own samples are a cubic 2^k + 1 grid, 0 for other
 // domains. Throws InputError for a grid of another size when no --dim asks to resample it: the
