@@ -100,7 +100,7 @@ TEST(CliStudy, StaircaseSeriesOnTheBall) {
 }
 
 // Q1 on hexdc meshes of the ball, their boundary nodes projected onto the true sphere: second
-// order in L2 (the issue asks >= 1.8).
+// order in L2 (at least 1.8).
 TEST(CliStudy, HexdcIsSecondOrderOnTheBall) {
   const fs::path dir = test::scratch_dir("study-hexdc");
   const auto r = run_volmesh("study convergence --problem sine --method hexdc --levels 3..5 "

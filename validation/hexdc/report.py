@@ -43,7 +43,7 @@ COLUMNS = ("nodes", "cells", "max edge (voxels)", "min edge (voxels)", "aspect r
 STAGE_KEYS = ("nodes", "cells", "max_edge", "min_edge", "max_aspect_ratio",
               "max_quad_distortion_deg", "degenerate_hexes", "valence")
 
-# Targets of the issue.
+# The targets of validation/hexdc/README.md.
 MIN_SJ_TARGET = 0.3
 QUAD_DISTORTION_TARGET = 85.6   # the paper's best (Table 1)
 VOLUME_TARGET = 0.02            # at the finer level

@@ -34,7 +34,7 @@ constexpr int kMinLevel = 2;
 constexpr int kDefaultVoxelsLog2 = 2;
 
 // The hexes whose nodes are optimised again after projection, boundary nodes on the surface: the
-// least scaled Jacobian the issue asks of every hex, as ProjectOptions' floor. Fewer hexes than
+// least scaled Jacobian aimed at for every hex, as ProjectOptions' floor. Fewer hexes than
 // untangle_hexes' default target leave the boundary nodes fewer moves to spend on the rest.
 constexpr double kSurfaceUntangleTarget = 0.3;
 

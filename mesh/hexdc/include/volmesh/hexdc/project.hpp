@@ -17,7 +17,7 @@
 // A move is accepted when every hex of the node passing the ten corner tets still does and the
 // least scaled Jacobian over its hexes stays at or above min(what it was, the floor); otherwise
 // half the step is tried, up to `halvings` times, and then the node stays. The floor, 0.3, is the
-// least scaled Jacobian the issue asks of every hex: projection may spend quality down to it,
+// least scaled Jacobian aimed at for every hex: projection may spend quality down to it,
 // never below. Nodes are visited in index order, in `passes` passes (a neighbour's move can make
 // room for a node held back), which makes the result deterministic. Between two passes,
 // smooth_hexes at its default options and this feature angle (Laplacian interior, tangent-plane

@@ -41,7 +41,7 @@ namespace volmesh {
 double hex_shape_quality(const std::array<Vec3, 8>& corners);
 
 struct UntangleOptions {
-  // Nodes of hexes below this quality are optimised: the aim for the least scaled
+  // Nodes of hexes below this quality are optimised: the aim for the least scaled
   // Jacobian; hexes above it are left to smoothing.
   double target_quality = 0.5;
   int sweeps = 10;                 // sweeps stop early once no node moves
