@@ -8,7 +8,6 @@
 //      table, CSV, log-log PNG, JSON
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -21,6 +20,7 @@
 #include "solve_setup.hpp"
 #include "study_run.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/domain/builtin.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -35,8 +35,6 @@ namespace volmesh::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
 // The pipeline's mesher and the methods the study compares.
 const std::string kPipelineMethod = "cutcell";
 const std::vector<std::string> kStudyMethods{"staircase", "cutcell"};
@@ -55,10 +53,6 @@ struct DemoOptions {
   std::string study_levels = "2..5";
   bool quiet = false;
 };
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void step(int n, const std::string& what) { std::cout << "\n[" << n << "/6] " << what << "\n"; }
 

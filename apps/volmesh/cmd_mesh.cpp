@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 #include <oneapi/tbb/global_control.h>
 
-#include <chrono>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -15,6 +14,7 @@
 #include "progress_line.hpp"
 #include "reports.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/geometry/tet_decomposition.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -25,12 +25,6 @@
 namespace volmesh::cli {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The share of the progress bar the mesher's own stages take; checking, the decomposition
 // into tetrahedra when asked, and writing follow.

@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -14,6 +13,7 @@
 #include "commands.hpp"
 #include "progress_line.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/partitioned_io.hpp"
@@ -32,12 +32,6 @@ struct PartitionCliOptions {
 
 // Where the steps start on the progress bar.
 constexpr double kCheckStart = 0.2, kPartitionStart = 0.3, kWriteStart = 0.7;
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::string extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

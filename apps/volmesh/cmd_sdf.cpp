@@ -3,13 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "progress_line.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/io/voxel_grid_io.hpp"
@@ -26,12 +26,6 @@ struct SdfOptions {
   double margin = 0.05;
   bool json = false, quiet = false;
 };
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The share of the progress bar that reading and checking the surface take; the sampling
 // and the writing follow.

@@ -3,7 +3,6 @@
 // One solve, written as a VTU with the solution, its error where an exact solution is known,
 // and the regions.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -12,6 +11,7 @@
 #include "progress_line.hpp"
 #include "solve_setup.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/open_domain.hpp"
@@ -33,12 +33,6 @@ struct SolveOptions {
 // follow.
 constexpr double kMeshShare = 0.5;
 constexpr double kWriteStart = 0.95;
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 nlohmann::json errors_json(const std::optional<fem::ErrorNorms>& e) {
   if (!e) return nullptr;

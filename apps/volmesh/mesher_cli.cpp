@@ -63,6 +63,10 @@ void add_option(CLI::App& app, const SharedOption& o, meshers::MethodOptions& gi
              flag, [&given, name](const std::string& v) { given[name] = v; }, help)
           ->check(CLI::IsMember(o.spec.choices));
       break;
+    case OptionSpec::Type::text:
+      app.add_option_function<std::string>(
+          flag, [&given, name](const std::string& v) { given[name] = v; }, help);
+      break;
   }
 }
 

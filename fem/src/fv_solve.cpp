@@ -3,27 +3,21 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "fv_gmres.hpp"
 #include "fv_system.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/fem/finite_volume.hpp"
 
 namespace volmesh::fem {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // Where the stages start, as rough fractions of the run (LinearSolverOptions::progress).
 constexpr double kLinearSolveStart = 0.3;
 constexpr double kCorrectionStart = 0.4;
 constexpr double kResultsStart = 0.9;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 Eigen::VectorXd solve_counted(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
                               const LinearSolverOptions& options, LinearSolveReport& total) {

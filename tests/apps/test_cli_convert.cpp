@@ -111,6 +111,44 @@ TEST(CliConvert, CutCellsReachEveryFormatAsConformingTets) {
   }
 }
 
+// The hexdc mesher's hexes go to every element format as they are: meshio reads hexahedra
+// with positive volumes summing to the mesh's, gmsh finds the MSH coherent.
+TEST(CliConvert, HexdcHexesReachEveryFormat) {
+  const fs::path dir = test::scratch_dir("convert-hexdc");
+  const fs::path vtu = dir / "ball.vtu";
+  const auto m = run_volmesh("mesh hexdc builtin:ball --level 3 -o " + vtu.string(), dir);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const PolyMesh hexes = read_vtu(vtu);
+  const ValidityReport expected = check_validity(hexes);
+  ASSERT_TRUE(expected.valid());
+
+  std::vector<fs::path> files{vtu};
+  for (const char* ext : {".msh", ".mesh", ".inp"}) {
+    const fs::path out = dir / (std::string("ball") + ext);
+    const auto r = run_volmesh("convert " + vtu.string() + " " + out.string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    files.push_back(out);
+  }
+  std::string output;
+  ASSERT_TRUE(fs::exists("/usr/bin/gmsh")) << "`make test` installs gmsh";
+  EXPECT_EQ(test::run("/usr/bin/gmsh -nopopup '" + (dir / "ball.msh").string() + "' -check",
+                      &output, true),
+            0)
+      << output;
+  EXPECT_EQ(output.find("Error"), std::string::npos) << output;
+  EXPECT_EQ(output.find("Warning"), std::string::npos) << output;
+
+  const auto seen = meshio_region_volumes(files);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string what = files[i].filename().string();
+    EXPECT_EQ(seen[i].value("cells", nlohmann::json::object()),
+              nlohmann::json({{"hexahedron", hexes.num_cells()}}))
+        << what;
+    EXPECT_GT(seen[i].value("min_hex", 0.0), 0.0) << what;
+    expect_same_volumes(expected, seen[i], what);
+  }
+}
+
 // Without --decompose the element formats refuse a polyhedron, name the option and write
 // nothing; a cell that no point sees whole is named; the option takes "tets" only.
 TEST(CliConvert, PolyhedraNeedTheOptionAndStarShapedCells) {

@@ -9,8 +9,10 @@
 #include <numbers>
 
 #include "run_volmesh.hpp"
+#include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/voxel_grid_io.hpp"
 
 namespace volmesh {
 namespace {
@@ -65,7 +67,8 @@ TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   // layers6: many vertex moves (made in parallel waves) and merges (scored in parallel).
   for (const std::string run : {"staircase builtin:primitives --level 4",
                                 "cutcell builtin:primitives --level 4",
-                                "cutcell builtin:layers6 --level 4"}) {
+                                "cutcell builtin:layers6 --level 4",
+                                "hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 4"}) {
     for (const std::string t : {"1", "2"}) {
       const fs::path out = dir / (t + ".vtu");
       const auto r = run_volmesh("mesh " + run + " --threads " + t + " -o " + out.string(), dir);
@@ -95,6 +98,222 @@ TEST(CliMesh, GridHexesAndKuhnTets) {
   EXPECT_NEAR(check_validity(tets).total_volume, 1.0, 1e-12);
 }
 
+// hexdc on the unit ball at level 3 (8 nodes per axis, one of them margin on each side).
+TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc");
+  const fs::path out = dir / "ball.vtu";
+  const auto r = run_volmesh("mesh hexdc builtin:ball --level 3 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "hexdc");
+  EXPECT_EQ(j["nodes_per_axis"], 8);
+  EXPECT_EQ(j["samples_per_axis"], 33);  // the default dim: level + 2
+  const auto& uniform = j["stages"]["uniform"];
+  const auto& improved = j["stages"]["improved"];
+  EXPECT_EQ(improved["degenerate_hexes"], 0);
+  EXPECT_EQ(j["qef_fallbacks"], 0);  // a sphere's crossings pin every QEF vertex
+  EXPECT_GT(j["interior_vertices"].get<Index>(), 0);
+  EXPECT_GT(j["boundary_vertices"].get<Index>(), 0);
+  // The buffer layer adds one inner copy per boundary node and one hex per boundary quad.
+  EXPECT_EQ(j["interior_vertices"].get<Index>() + j["boundary_vertices"].get<Index>() +
+                j["pillow"]["copies"].get<Index>(),
+            j["vertices"].get<Index>());
+  EXPECT_EQ(uniform["cells"].get<Index>() + j["pillow"]["hexes"].get<Index>(),
+            j["cells"].get<Index>());
+  EXPECT_EQ(improved["nodes"], j["vertices"]);
+  EXPECT_EQ(improved["cells"], j["cells"]);
+  EXPECT_GT(j["pillow"]["two_boundary_faces_before"].get<Index>(), 0);
+  EXPECT_EQ(j["pillow"]["two_boundary_faces_after"], 0);
+  // The uniform mesh's hexes are unit cubes of the node lattice inside: eight around a node.
+  EXPECT_GT(uniform["valence"]["8"].get<Index>(), 0);
+  Index valence_nodes = 0;
+  for (const auto& [hexes, nodes] : improved["valence"].items())
+    valence_nodes += nodes.get<Index>();
+  EXPECT_EQ(valence_nodes, j["vertices"].get<Index>());
+  const double min_jacobian = improved["min_scaled_jacobian"].get<double>();
+  const double mean_jacobian = improved["mean_scaled_jacobian"].get<double>();
+  EXPECT_TRUE(min_jacobian > 0.0 && min_jacobian <= mean_jacobian && mean_jacobian <= 1.0)
+      << min_jacobian << " " << mean_jacobian;
+  const double distortion = improved["max_quad_distortion_deg"].get<double>();
+  EXPECT_TRUE(distortion >= 0.0 && distortion < 180.0) << distortion;
+  EXPECT_GE(improved["max_aspect_ratio"].get<double>(), 1.0);
+  EXPECT_LE(improved["min_edge"].get<double>(), improved["max_edge"].get<double>());
+  EXPECT_TRUE(j["field_seconds"].is_number());
+  EXPECT_TRUE(uniform["seconds"].is_number());
+  EXPECT_TRUE(improved["seconds"].is_number());
+
+  // The writer gives every cell VTK_HEXAHEDRON (12) exactly when each one is a hex, and
+  // writes polyhedra's face arrays otherwise.
+  EXPECT_EQ(test::slurp(out).find("faceoffsets"), std::string::npos);
+  const PolyMesh mesh = read_mesh(out);
+  const CellFaces cell_faces = build_cell_faces(mesh);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    ASSERT_EQ(classify_cell(mesh, cell_faces, c).shape, CellShape::Hexahedron) << c;
+  const ValidityReport v = check_validity(mesh);
+  EXPECT_TRUE(v.valid());
+  EXPECT_EQ(j["cells"], mesh.num_cells());
+  // The boundary nodes lie on the sphere, so the bilinear boundary quads lie inside it: the
+  // volume comes out below 4/3 pi = 4.189, by 5% at this level (measured 3.978).
+  const double ball = 4.0 * std::numbers::pi / 3.0;  // builtin:ball has radius 1
+  EXPECT_LT(v.total_volume, ball);
+  EXPECT_GT(v.total_volume, 0.94 * ball);
+}
+
+// The boundary refinement puts every boundary node of the ball on the unit sphere (builtin:ball
+// has radius 1) up to rounding: the solver's TRUE boundary.
+TEST(CliMesh, HexdcPutsTheBallsBoundaryNodesOnTheSphere) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-sphere");
+  const fs::path out = dir / "ball.vtu";
+  const auto r = run_volmesh("mesh hexdc builtin:ball --level 4 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto projection = nlohmann::json::parse(r.out)["projection"];
+  EXPECT_GT(projection["nodes_projected"].get<Index>(), 0);
+  EXPECT_EQ(projection["nodes_kept_on_features"], 0);
+  EXPECT_EQ(projection["nodes_held_back"], 0);
+  EXPECT_EQ(projection["max_distance_left"], 0.0);
+  const PolyMesh mesh = read_mesh(out);
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    if (!mesh.is_boundary(f)) continue;
+    for (const Index v : mesh.face(f)) ASSERT_NEAR(mesh.points[v].norm(), 1.0, 1e-9) << v;
+  }
+}
+
+// The torus's concave side leaves 30 of 436 hexes failing the corner tets at level 4 before
+// pillowing; the buffer layer, smoothing and the optimisation of the worst hexes repair them
+// all and raise the least scaled Jacobian above 0.3 (measured 0.52).
+TEST(CliMesh, HexdcPillowingRepairsTheTorusAtLevel4) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-torus");
+  const fs::path out = dir / "torus.vtu";
+  const std::string torus = VOLMESH_TEST_DATA "/domains/torus.json";
+  const auto r = run_volmesh("mesh hexdc " + torus + " --level 4 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["stages"]["uniform"]["degenerate_hexes"].get<Index>(), 0);
+  EXPECT_EQ(j["pillow"]["two_boundary_faces_after"], 0);
+  EXPECT_EQ(j["stages"]["improved"]["degenerate_hexes"], 0);
+  EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.3);
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
+}
+
+// Elephant at level 5 on a 33^3 grid: projection leaves buffer hexes folded under their outer
+// quads, which no move of an interior node unfolds; with the boundary nodes sliding on the
+// surface (and off a crease where a quad has three corners on it) every hex passes.
+TEST(CliMesh, HexdcUnfoldsBufferHexesWithTheBoundaryOnTheSurface) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-elephant");
+  const fs::path out = dir / "elephant.vtu";
+  const auto r = run_volmesh("mesh hexdc " VOLMESH_CGAL_DATA
+                             "/meshes/elephant.off --level 5 --dim 5 --json -o " + out.string(),
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["untangling"]["on_surface_moves"].get<Index>(), 0);
+  EXPECT_EQ(j["untangling"]["on_surface_degenerate_after"], 0);
+  EXPECT_EQ(j["stages"]["improved"]["degenerate_hexes"], 0);
+  EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.0);
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
+}
+
+// A surface input gets the exact signed distance, so the QEF vertices land on the cube's
+// faces, edges and corners: its volume (0.125) comes out to 1e-4 at level 3 (measured 7e-5).
+TEST(CliMesh, HexdcMeshesATriangulatedCubeToItsVolume) {
+  constexpr double kCubeVolume = 0.125, kRelativeError = 1e-4;
+  const fs::path dir = test::scratch_dir("mesh-hexdc-cube");
+  const fs::path out = dir / "cube.vtu";
+  const std::string cube = VOLMESH_TEST_DATA "/domains/inner_cube.off";
+  const auto r = run_volmesh("mesh hexdc " + cube + " --level 3 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["stages"]["improved"]["degenerate_hexes"], 0);
+  // A cube's corner hexes: about 1/sqrt(3).
+  EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.5);
+  const ValidityReport v = check_validity(read_mesh(out));
+  EXPECT_TRUE(v.valid());
+  EXPECT_NEAR(v.total_volume, kCubeVolume, kRelativeError * kCubeVolume);
+}
+
+// --refine-boundary 1 splits the hexes next to the surface into 27 before pillowing, with
+// transition templates inward; the result is still a valid conforming hex mesh.
+TEST(CliMesh, HexdcRefinesTheBoundaryLayer) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-refine");
+  const fs::path plain = dir / "plain.vtu", refined = dir / "refined.vtu";
+  const auto p = run_volmesh("mesh hexdc builtin:ball --level 3 --json -o " + plain.string(), dir);
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const auto r = run_volmesh(
+      "mesh hexdc builtin:ball --level 3 --refine-boundary 1 --json -o " + refined.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto jp = nlohmann::json::parse(p.out), jr = nlohmann::json::parse(r.out);
+  EXPECT_EQ(jp["refinement"]["marked_nodes"], 0);
+  EXPECT_EQ(jp["refinement"]["hexes_after"], jp["stages"]["uniform"]["cells"]);
+  EXPECT_FALSE(jp["stages"].contains("refined"));
+  const auto& refinement = jr["refinement"];
+  const auto& stages = jr["stages"];
+  EXPECT_EQ(refinement["hexes_before"], stages["uniform"]["cells"]);
+  EXPECT_EQ(refinement["hexes_after"], stages["refined"]["cells"]);
+  EXPECT_GT(refinement["hexes_by_template"]["full"].get<Index>(), 0);
+  EXPECT_GT(refinement["hexes_after"].get<Index>(), refinement["hexes_before"].get<Index>());
+  EXPECT_GT(jr["cells"].get<Index>(), jp["cells"].get<Index>());
+  EXPECT_EQ(stages["refined"]["degenerate_hexes"], 0);
+  EXPECT_EQ(stages["improved"]["degenerate_hexes"], 0);
+  EXPECT_GT(stages["improved"]["min_scaled_jacobian"].get<double>(), 0.0);
+  const ValidityReport v = check_validity(read_mesh(refined));
+  EXPECT_TRUE(v.valid());
+  // With its boundary nodes on the sphere, the finer boundary is closer to the ball's volume.
+  const double ball = 4.0 * std::numbers::pi / 3.0;
+  EXPECT_LT(std::abs(v.total_volume - ball),
+            std::abs(check_validity(read_mesh(plain)).total_volume - ball));
+}
+
+TEST(CliMesh, HexdcRefusesABadRefineBoxWithOneLine) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-refine-bad");
+  const fs::path out = dir / "out.vtu";
+  for (const std::string box : {"0,0,0,1,1", "0,0,0,1,1,x", "1,0,0,0,1,1"}) {
+    const auto r = run_volmesh(
+        "mesh hexdc builtin:ball --level 3 --refine-box " + box + " -o " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 1) << box;
+    EXPECT_EQ(test::count_lines(r.err), 1) << box << ": " << r.err;
+    EXPECT_NE(r.err.find("--refine-box " + box + ": not six numbers"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << box;
+  }
+}
+
+TEST(CliMesh, HexdcRefusesBadLevelsAndFoldedHexesWithOneLine) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-bad");
+  const fs::path out = dir / "out.vtu";
+  // A signed-distance grid with no sample inside, and one of 10 samples per axis.
+  const auto ball_grid = [&](Index n, double radius, const std::string& name) {
+    VoxelGrid grid;
+    grid.dims = {n, n, n};
+    grid.origin = Vec3::Constant(-1.5);
+    grid.spacing = Vec3::Constant(3.0 / static_cast<double>(n - 1));
+    for (Index k = 0; k < n; ++k)
+      for (Index j = 0; j < n; ++j)
+        for (Index i = 0; i < n; ++i)
+          grid.values.push_back(static_cast<float>(radius - grid.point(i, j, k).norm()));
+    write_rawiv(grid, dir / name);
+    return (dir / name).string();
+  };
+  const std::string empty = ball_grid(17, -1.0, "empty.rawiv");
+  const std::string ten = ball_grid(10, 1.0, "ten.rawiv");
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"builtin:ball --level 0", "--level 0: at least 2"},
+           {ten + " --level 2", "ten.rawiv: 10x10x10 samples: hexdc needs a cubic grid"},
+           {empty + " --level 2", "empty.rawiv: no sample of the signed distance is >= 0"},
+           {empty + " --level 5", "--level 5 is deeper than the grid of empty.rawiv allows"},
+           {VOLMESH_TEST_DATA "/bad/open_surface.off --level 3", "the surface has a hole"},
+           {"builtin:ball --level 5 --dim 4",
+            "--level 5 is deeper than the grid of builtin:ball allows: 17 samples per axis"},
+           // At level 4 one buffer hex at fandisk's sharp edges stays folded however its
+           // interior and boundary nodes move: 1 of 881 hexes fails the corner tets.
+           {VOLMESH_CGAL_DATA "/meshes/fandisk.off --level 4",
+            "hexes of fandisk.off fail the ten corner tets"}}) {
+    const auto r = run_volmesh("mesh hexdc " + args + " -o " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}
+
 // The OpenFOAM case check_mesh_report writes for `name`.
 fs::path foam_case(const std::string& name) {
   return test::scratch_path("mesh-foam-" + name) / (name + ".foam");
@@ -117,10 +336,26 @@ std::string check_mesh_report(const std::string& mesh_args, const std::string& n
   return test::slurp(log);
 }
 
-TEST(CliMesh, StaircaseFoamCasePassesCheckMesh) {
-  const std::string report = check_mesh_report("staircase builtin:ball --level 4", "staircase");
-  if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
-  EXPECT_NE(report.find("Mesh OK."), std::string::npos) << report;
+// The number after `label` in checkMesh's report, 0 when the line is missing.
+int count_after(const std::string& report, const std::string& label) {
+  const std::size_t at = report.find(label);
+  return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
+}
+
+TEST(CliMesh, StaircaseAndHexdcFoamCasesPassCheckMesh) {
+  for (const auto& [args, name] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"staircase builtin:ball --level 4", "staircase"},
+           {"hexdc builtin:ball --level 4", "hexdc-ball"},
+           {"hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 3", "hexdc-cube"}}) {
+    const std::string report = check_mesh_report(args, name);
+    if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
+    EXPECT_NE(report.find("Mesh OK."), std::string::npos) << args << "\n" << report;
+    if (!name.starts_with("hexdc")) continue;  // the staircase's 2:1 steps make polyhedra
+    // checkMesh counts cell shapes: only hexahedra.
+    EXPECT_EQ(count_after(report, "prisms:"), 0) << args;
+    EXPECT_EQ(count_after(report, "polyhedra:"), 0) << args;
+  }
 }
 
 // A ball, two real surfaces from libcgal-demo and the seven regions of builtin:primitives,
@@ -145,11 +380,6 @@ TEST(CliMesh, CutcellFoamCasesPassCheckMesh) {
   }
 }
 
-// The number after `label` in checkMesh's report, 0 when the line is missing.
-int count_after(const std::string& report, const std::string& label) {
-  const std::size_t at = report.find(label);
-  return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
-}
 
 // `volmesh check` counts the faces that make checkMesh fail as checkMesh does, on a case that
 // has such faces: builtin:layers6 at level 3.

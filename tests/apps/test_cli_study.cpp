@@ -99,6 +99,20 @@ TEST(CliStudy, StaircaseSeriesOnTheBall) {
   EXPECT_LT(s["levels"][1]["l2"].get<double>(), s["levels"][0]["l2"].get<double>());
 }
 
+// Q1 on hexdc meshes of the ball, their boundary nodes projected onto the true sphere: second
+// order in L2 (at least 1.8).
+TEST(CliStudy, HexdcIsSecondOrderOnTheBall) {
+  const fs::path dir = test::scratch_dir("study-hexdc");
+  const auto r = run_volmesh("study convergence --problem sine --method hexdc --levels 3..5 "
+                             "--json -o " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& s = j["series"][0];
+  EXPECT_EQ(s["space"], "q1");
+  EXPECT_GE(s["slope"]["L2"].get<double>(), 1.8);
+  EXPECT_GE(s["slope"]["H1"].get<double>(), 0.9);
+}
+
 TEST(CliStudy, MethodsAreComparedInOneTable) {
   const fs::path dir = test::scratch_dir("study-compare");
   const fs::path out = dir / "out";

@@ -55,6 +55,33 @@ TEST_P(SdfComputeMesh, EverySampleMatchesBruteForce) {
   EXPECT_GT(checked, count - 10);
 }
 
+// The band sampling agrees with the full one: every sign, every value within the band, and
+// farther out a bound between the band and the exact distance.
+TEST_P(SdfComputeMesh, BandSamplesAreExactNearTheSurfaceAndBoundsFarther) {
+  const auto mesh = surface_test::cgal_mesh(GetParam().mesh);
+  ASSERT_TRUE(mesh) << GetParam().mesh << " not found in " << VOLMESH_CGAL_DATA
+                    << " (make test installs libcgal-demo)";
+  const SignedDistance sd(*mesh, GetParam().mesh);
+  VoxelGrid full = sdf_layout(sd.bounds(), 65, 0.1);
+  VoxelGrid band = full;
+  sd.sample(full);
+  const double width = 2.0 * full.spacing.maxCoeff();
+  sd.sample_band(band, width);
+  std::size_t far = 0;
+  for (std::size_t v = 0; v < full.values.size(); ++v) {
+    const float exact = full.values[v], bound = band.values[v];
+    ASSERT_EQ(exact > 0.0f, bound > 0.0f) << v;
+    if (std::abs(exact) <= width) {
+      ASSERT_EQ(exact, bound) << v;
+    } else if (exact != bound) {
+      ++far;
+      ASSERT_LE(std::abs(bound), std::abs(exact) * (1.0f + 1e-6f)) << v;
+      ASSERT_GT(std::abs(bound), width * (1.0 - 1e-6)) << v;
+    }
+  }
+  EXPECT_GT(far, full.values.size() / 4);  // many samples are far: the point of the band
+}
+
 INSTANTIATE_TEST_SUITE_P(Libcgal, SdfComputeMesh,
                          testing::Values(Case{"elephant.off", 15}, Case{"fandisk.off", 11},
                                          Case{"knot1.off", 13}),

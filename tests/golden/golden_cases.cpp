@@ -28,6 +28,11 @@ const std::vector<GoldenCase>& golden_cases() {
       {"staircase-elephant-5", "staircase", "cgal:meshes/elephant.off", 5, {}, ""},
       {"cutcell-ball-3-sine", "cutcell", "builtin:ball", 3, {}, "sine"},
       {"staircase-ball-4-sine", "staircase", "builtin:ball", 4, {}, "sine"},
+      {"hexdc-ball-4", "hexdc", "builtin:ball", 4, {}, ""},
+      {"hexdc-cube-3", "hexdc", "data:domains/inner_cube.off", 3, {}, ""},
+      {"hexdc-torus-4", "hexdc", "data:domains/torus.json", 4, {}, ""},
+      {"hexdc-ball-3-refined", "hexdc", "builtin:ball", 3, {{"refine-boundary", std::int64_t{1}}}, ""},
+      {"hexdc-ball-3-sine", "hexdc", "builtin:ball", 3, {}, "sine"},
   };
   return cases;
 }
@@ -49,9 +54,13 @@ PolyMesh mesh_case(const GoldenCase& c, const Domain& domain) {
   return meshers::mesh(meshers::find_mesher(c.method), domain, request).mesh;
 }
 
+std::string case_space(const GoldenCase& c) {
+  return meshers::find_mesher(c.method).default_space;
+}
+
 fem::ScalarSolution solve_case(const GoldenCase& c, const Domain& domain, const PolyMesh& mesh) {
   const fem::PoissonProblem problem = fem::make_poisson_problem(c.problem, domain, mesh.tag_names);
-  return fem::solve_poisson(mesh, problem, fem::Space::polyhedral);
+  return fem::solve_poisson(mesh, problem, *fem::space_from_name(case_space(c)));
 }
 
 }  // namespace volmesh::golden

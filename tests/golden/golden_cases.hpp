@@ -36,8 +36,11 @@ std::unique_ptr<Domain> open_case_domain(const GoldenCase& c);
 // a method or an option it does not know.
 PolyMesh mesh_case(const GoldenCase& c, const Domain& domain);
 
-// The case's problem solved on the mesh in the space `volmesh solve` picks for an octree
-// mesh (the polyhedral space).
+// The space `volmesh solve` picks for the case's method: polyhedral on octree cells, Q1 on
+// hexdc's hexes.
+std::string case_space(const GoldenCase& c);
+
+// The case's problem solved on the mesh in case_space.
 fem::ScalarSolution solve_case(const GoldenCase& c, const Domain& domain, const PolyMesh& mesh);
 
 }  // namespace volmesh::golden

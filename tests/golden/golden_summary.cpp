@@ -81,7 +81,7 @@ json quality_summary(const PolyMesh& mesh) {
 
 json solve_summary(const GoldenCase& c, const fem::ScalarSolution& s) {
   json j = {{"problem", c.problem},
-            {"space", "polyhedral"},
+            {"space", case_space(c)},
             {"dofs", s.dofs},
             {"unknowns", s.solve.unknowns},
             {"method", s.solve.method},

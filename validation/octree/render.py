@@ -3,13 +3,15 @@ validation report. meshio 5.0 cannot read polyhedral VTU files with cell data (i
 polyhedra into blocks by face count but not the data), so the polyMesh is parsed here.
 
   render.py CASE.foam/ OUT.png --title T [--clip x:0.5 [--cut-only]] [--view AZIMUTH,ELEVATION]
+            [--boundary-layer]
 
 Without --clip: every boundary face, coloured by the region of its cell. With --clip A:F: only
 the cells whose centroid lies below the fraction F of the bounding box along axis A; the
 faces bounding that set are drawn with their edges, so the cut cells along the boundaries
 and interfaces show on the clip plane; --cut-only keeps only the cut cells (those with a face
 not parallel to a coordinate plane), which shows the boundaries and interfaces as the shells
-of cut cells the mesher made of them. Orthographic view, Lambert shading, painter's order.
+of cut cells the mesher made of them. --boundary-layer colours the cells with a face on the
+boundary apart from the rest (hexdc's buffer layer). Orthographic view, Lambert shading, painter's order.
 """
 import argparse
 import re
@@ -119,7 +121,18 @@ def view_basis(azimuth, elevation):
     return np.array([right, up, towards])
 
 
-def render(points, faces, drawn, region, out, title, azimuth, elevation, edges):
+def mark_boundary_layer(owner, neighbour, region):
+    """A region number past the others for every cell owning a boundary face, and the legend's
+    names."""
+    marked = region.copy()
+    layer = region.max() + 1
+    marked[owner[len(neighbour):]] = layer
+    names = {r: f"region {r}" for r in np.unique(region)}
+    names[layer] = "boundary layer"
+    return marked, names
+
+
+def render(points, faces, drawn, region, out, title, azimuth, elevation, edges, names=None):
     basis = view_basis(azimuth, elevation)
     light = basis[2] * 0.8 + basis[1] * 0.45 + basis[0] * 0.25
     light /= np.linalg.norm(light)
@@ -146,9 +159,10 @@ def render(points, faces, drawn, region, out, title, azimuth, elevation, edges):
     ax.set_ylim(everything[:, 1].min(), everything[:, 1].max())
     ax.set_aspect("equal")
     ax.axis("off")
-    handles = [plt.Rectangle((0, 0), 1, 1, color=colours((r - 1) % 10))
-               for r in np.unique(region)]
-    ax.legend(handles, [f"region {r}" for r in np.unique(region)], loc="upper left",
+    shown = np.unique(region)
+    names = names or {r: f"region {r}" for r in shown}
+    handles = [plt.Rectangle((0, 0), 1, 1, color=colours((r - 1) % 10)) for r in shown]
+    ax.legend(handles, [names[r] for r in shown], loc="upper left",
               fontsize=8, frameon=False)
     ax.set_title(title, fontsize=10)
     fig.tight_layout()
@@ -163,6 +177,8 @@ def main():
     parser.add_argument("--clip", help="AXIS:FRACTION, e.g. x:0.5")
     parser.add_argument("--cut-only", action="store_true", help="with --clip: only the cut cells")
     parser.add_argument("--view", default="-60,25", help="AZIMUTH,ELEVATION in degrees")
+    parser.add_argument("--boundary-layer", action="store_true",
+                        help="colour the cells with a boundary face apart")
     args = parser.parse_args()
     points, faces, owner, neighbour, region = read_case(args.case)
     keep = np.ones(len(region), dtype=bool)
@@ -177,9 +193,12 @@ def main():
         args.title += f": {kept} with centroid {axis_name} < {cut:.2f}"
         if args.cut_only:
             keep &= cut_cells(points, faces, owner, neighbour, len(region))
+    names = None
+    if args.boundary_layer:
+        region, names = mark_boundary_layer(owner, neighbour, region)
     azimuth, elevation = (float(v) for v in args.view.split(","))
     render(points, faces, visible_faces(faces, owner, neighbour, keep), region, args.out,
-           args.title, azimuth, elevation, edges=bool(args.clip))
+           args.title, azimuth, elevation, edges=bool(args.clip), names=names)
 
 
 if __name__ == "__main__":

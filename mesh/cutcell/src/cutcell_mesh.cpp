@@ -3,7 +3,6 @@
 #include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -14,6 +13,7 @@
 #include "reflex_split.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {
@@ -22,9 +22,6 @@ namespace {
 // The largest vertex clearance accepted: the clear stretches at an edge's two ends then
 // leave at least half of the edge to its crossings.
 constexpr double kMaxVertexClearance = 0.25;
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Splits the listed leaves (those not at the deepest level, each once) and rebalances around
 // them; returns the leaves made or touched.

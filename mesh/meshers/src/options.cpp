@@ -19,6 +19,7 @@ std::size_t value_index(OptionSpec::Type type) {
     case OptionSpec::Type::real:
       return 2;
     case OptionSpec::Type::choice:
+    case OptionSpec::Type::text:
       return 3;
   }
   return std::variant_npos;
@@ -34,6 +35,8 @@ const char* type_name(OptionSpec::Type type) {
       return "a number";
     case OptionSpec::Type::choice:
       return "one of its choices";
+    case OptionSpec::Type::text:
+      return "a text";
   }
   return "";
 }

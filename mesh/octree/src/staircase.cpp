@@ -1,9 +1,9 @@
 // Staircase mesh of an octree: cubes kept by their centre's region.
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/octree/staircase.hpp"
 
 #include <oneapi/tbb/parallel_for.h>
 
-#include <chrono>
 #include <algorithm>
 #include <sstream>
 
@@ -13,12 +13,6 @@
 namespace volmesh {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // One face a kept cell emits: its loop is a leaf face (of `leaf`, side `face`), reversed
 // when the owner is on the other side.

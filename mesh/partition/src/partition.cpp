@@ -1,9 +1,9 @@
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/partition/partition.hpp"
 
 #include <metis.h>
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 #include <type_traits>
 
@@ -15,12 +15,6 @@ namespace volmesh {
 static_assert(std::is_same_v<idx_t, Index>, "METIS must be built with 32-bit idx_t");
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Any fixed value: the same graph and options then give the same parts on every run.
 constexpr idx_t kSeed = 20240531;

@@ -7,12 +7,14 @@ of what meshio found in its 3D cells:
     regions    volume per region, by region number
     min_tet    the smallest tetra volume (positive when meshio reads the corners as
                positively oriented)
+    min_hex    the smallest hexahedron volume, likewise
 
 A cell's region is its "region" cell data (VTU), its physical group (Gmsh "gmsh:physical"),
 its reference (MEDIT "medit:ref") or the ELSET region_<r> holding it (Abaqus); with
 --region-array NAME, the first component of its cell data NAME instead. Tetra volumes are
 signed, in VTK's corner order; a polyhedron's is summed over its outward faces, each fanned
-about its vertex average as volmesh measures them.
+about its vertex average as volmesh measures them, and so is a hexahedron's, its faces taken
+in VTK's corner order.
 Usage: meshio_region_volumes.py [--region-array NAME] FILE..."""
 import json
 import sys
@@ -22,6 +24,8 @@ import meshio
 import numpy as np
 
 REGION_ARRAYS = ("region", "gmsh:physical", "medit:ref")
+# Outward faces of a VTK hexahedron in its corner numbers.
+HEX_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
 def tet_volumes(points, tets):
@@ -58,12 +62,17 @@ def block_regions(mesh, i, size, arrays):
 def summary(path, arrays):
     mesh = meshio.read(path)
     cells, regions = Counter(), defaultdict(float)
-    min_tet = None
+    min_tet = min_hex = None
     for i, block in enumerate(mesh.cells):
         if block.type == "tetra":
             volumes = tet_volumes(mesh.points, block.data)
             smallest = float(volumes.min())
             min_tet = smallest if min_tet is None else min(min_tet, smallest)
+        elif block.type == "hexahedron":
+            volumes = polyhedron_volumes(mesh.points, [[hexa[list(f)] for f in HEX_FACES]
+                                                       for hexa in block.data])
+            smallest = float(volumes.min())
+            min_hex = smallest if min_hex is None else min(min_hex, smallest)
         elif block.type.startswith("polyhedron"):
             volumes = polyhedron_volumes(mesh.points, block.data)
         else:
@@ -72,7 +81,8 @@ def summary(path, arrays):
         for region, volume in zip(block_regions(mesh, i, len(block.data), arrays), volumes):
             regions[int(region)] += float(volume)
     return {"cells": dict(cells), "volume": sum(regions.values()),
-            "regions": {str(r): v for r, v in sorted(regions.items())}, "min_tet": min_tet}
+            "regions": {str(r): v for r, v in sorted(regions.items())}, "min_tet": min_tet,
+            "min_hex": min_hex}
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "volmesh/domain/domain.hpp"
+#include "volmesh/domain/outer_boundary.hpp"
 #include "volmesh/fem/problem.hpp"
 
 namespace volmesh::fem {
@@ -68,25 +69,9 @@ UserPoissonProblem user_poisson_problem(const std::string& exact_text,
                                         const Domain& domain,
                                         const std::vector<std::string>& tags);
 
-// The closest point of the domain's outer boundary (the interfaces with region 0), for
-// PoissonProblem::to_true_boundary. For an AnalyticDomain it is exact: each primitive's own
-// closest point (sphere: radial projection; box, cylinder, half-space: clamping; torus: closed
-// form; ellipsoid: Eberly's root bracketing), keeping those that lie on the outer boundary or
-// on its edges, the nearest of them. Any other domain, or a point for which no primitive's
-// closest point lies on the boundary, uses project_along_normals.
-PointMap true_boundary_map(const Domain& domain);
-
-// Closest-point iteration with the domain's own queries: q ← the outer-boundary crossing
-// nearest to p on the line through p along normal(q), starting from normal(p). A fixed point
-// is a point whose normal line passes through p: a closest point. The error shrinks by about
-// (distance × curvature) per step, so for mesh points O(h) from a smooth surface a few steps
-// reach rounding; it stops when a step moves q by less than 1e-14 of the domain size (at
-// most 50 steps). The result lies on the surface as accurately as Domain::crossings puts it
-// (1e-12 for analytic solids) and is the closest point as accurately as Domain::normal is
-// (exact for analytic solids; for a triangulated surface, whose normals are per triangle, it
-// is the closest point of the triangulation). Returns p when no boundary is found within
-// the domain's bounding box diagonal.
-Vec3 project_along_normals(const Domain& domain, const Vec3& p);
+// The closest point of the domain's outer boundary, for PoissonProblem::to_true_boundary:
+// outer_boundary_map (volmesh/domain/outer_boundary.hpp), exact for analytic solids.
+inline PointMap true_boundary_map(const Domain& domain) { return outer_boundary_map(domain); }
 
 // Fourth-order central differences with step h: used to check sources and exact solutions
 // and to differentiate user expressions.

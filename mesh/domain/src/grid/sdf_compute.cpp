@@ -8,9 +8,12 @@
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "surface/surface_closest.hpp"
 
@@ -34,6 +37,10 @@ struct DistanceData {
 }  // namespace surface
 
 namespace {
+
+// Samples per brick side in sample_band: 512 samples per far query, bricks small enough
+// that a band a few samples wide leaves most of them far.
+constexpr Index kBrick = 8;
 
 surface::SurfaceGeometry geometry_of(TriSurface s, const std::string& name) {
   surface::SurfaceGeometry g;
@@ -74,29 +81,80 @@ double SignedDistance::operator()(const Vec3& p) const {
   return data_->at(p, hint);
 }
 
+Vec3 SignedDistance::closest_point(const Vec3& p) const { return data_->tree.closest(p).point; }
+
 Box3 SignedDistance::bounds() const { return surface::bounding_box(data_->geometry); }
 
-void SignedDistance::sample(VoxelGrid& grid, const std::function<void(double)>& progress) const {
+namespace {
+
+// Checks the grid's layout and sizes its values, for SignedDistance's `what`.
+void prepare(VoxelGrid& grid, const char* what) {
   const auto& n = grid.dims;
   if (n[0] < 1 || n[1] < 1 || n[2] < 1 || !grid.origin.allFinite() || !grid.spacing.allFinite())
-    throw std::invalid_argument("SignedDistance::sample: dims < 1 or non-finite geometry");
+    throw std::invalid_argument(std::string("SignedDistance::") + what +
+                                ": dims < 1 or non-finite geometry");
   grid.values.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0f);
+}
+
+// Runs slab(s) for s in [0, slabs) on every core, reporting the fraction of slabs done.
+template <class Slab>
+void for_each_slab(Index slabs, const std::function<void(double)>& progress, const Slab& slab) {
   std::mutex reporting;
-  Index slices_done = 0;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, n[2], 1), [&](const tbb::blocked_range<Index>& r) {
-    for (Index k = r.begin(); k != r.end(); ++k) {
-      Index hint = kNoIndex;
-      for (Index j = 0; j < n[1]; ++j)
-        for (Index step = 0; step < n[0]; ++step) {
-          const Index i = j % 2 ? n[0] - 1 - step : step;
-          grid.values[grid.index(i, j, k)] =
-              static_cast<float>(data_->at(grid.point(i, j, k), hint));
-        }
+  Index done = 0;
+  const auto run = [&](const tbb::blocked_range<Index>& r) {
+    for (Index s = r.begin(); s != r.end(); ++s) {
+      slab(s);
       if (progress) {
         const std::lock_guard lock(reporting);
-        progress(static_cast<double>(++slices_done) / n[2]);
+        progress(static_cast<double>(++done) / slabs);
       }
     }
+  };
+  tbb::parallel_for(tbb::blocked_range<Index>(0, slabs, 1), run);
+}
+
+}  // namespace
+
+void SignedDistance::sample(VoxelGrid& grid, const std::function<void(double)>& progress) const {
+  prepare(grid, "sample");
+  const auto& n = grid.dims;
+  for_each_slab(n[2], progress, [&](Index k) {
+    Index hint = kNoIndex;
+    for (Index j = 0; j < n[1]; ++j)
+      for (Index step = 0; step < n[0]; ++step) {
+        const Index i = j % 2 ? n[0] - 1 - step : step;
+        grid.values[grid.index(i, j, k)] = static_cast<float>(data_->at(grid.point(i, j, k), hint));
+      }
+  });
+}
+
+void SignedDistance::sample_band(VoxelGrid& grid, double band,
+                                 const std::function<void(double)>& progress) const {
+  if (!(band >= 0.0)) throw std::invalid_argument("SignedDistance::sample_band: band < 0");
+  prepare(grid, "sample_band");
+  const auto& n = grid.dims;
+  const std::array<Index, 3> bricks{(n[0] + kBrick - 1) / kBrick, (n[1] + kBrick - 1) / kBrick,
+                                    (n[2] + kBrick - 1) / kBrick};
+  for_each_slab(bricks[2], progress, [&](Index bk) {
+    Index hint = kNoIndex;
+    for (Index bj = 0; bj < bricks[1]; ++bj)
+      for (Index bi = 0; bi < bricks[0]; ++bi) {
+        const std::array<Index, 3> lo{bi * kBrick, bj * kBrick, bk * kBrick};
+        std::array<Index, 3> hi{};
+        for (int a = 0; a < 3; ++a) hi[a] = std::min(lo[a] + kBrick, n[a]) - 1;
+        const Vec3 a = grid.point(lo[0], lo[1], lo[2]), b = grid.point(hi[0], hi[1], hi[2]);
+        const Vec3 centre = 0.5 * (a + b);
+        const double d = data_->at(centre, hint);
+        const bool far = std::abs(d) > band + 0.5 * (b - a).norm();
+        for (Index k = lo[2]; k <= hi[2]; ++k)
+          for (Index j = lo[1]; j <= hi[1]; ++j)
+            for (Index i = lo[0]; i <= hi[0]; ++i) {
+              const Vec3 p = grid.point(i, j, k);
+              const double v = far ? std::copysign(std::abs(d) - (p - centre).norm(), d)
+                                   : data_->at(p, hint);
+              grid.values[grid.index(i, j, k)] = static_cast<float>(v);
+            }
+      }
   });
 }
 

@@ -2,7 +2,9 @@
 #include "volmesh/domain/surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <vector>
 
 #include "surface_domain_data.hpp"
 #include "volmesh/core/errors.hpp"
@@ -73,5 +75,23 @@ Box3 SurfaceDomain::bounds() const { return data_->bounds; }
 std::vector<Index> SurfaceDomain::regions() const { return data_->regions; }
 const std::vector<Index>& SurfaceDomain::labels() const { return data_->label; }
 const std::vector<Index>& SurfaceDomain::depths() const { return data_->depth; }
+
+TriSurface SurfaceDomain::surface(Index s) const {
+  const surface::SurfaceGeometry& g = data_->geometry;
+  TriSurface out;
+  std::vector<Index> local(g.points.size(), kNoIndex);  // geometry point -> out's
+  for (Index t = g.first_triangle.at(s); t < g.first_triangle.at(s + 1); ++t) {
+    std::array<Index, 3>& c = out.triangles.emplace_back();
+    for (int k = 0; k < 3; ++k) {
+      Index& l = local[g.triangles[t][k]];
+      if (l == kNoIndex) {
+        l = out.num_points();
+        out.points.push_back(g.points[g.triangles[t][k]]);
+      }
+      c[k] = l;
+    }
+  }
+  return out;
+}
 
 }  // namespace volmesh

@@ -38,12 +38,22 @@ class SignedDistance {
   // Exact up to the rounding of the point-triangle distance (an absolute error of about
   // 1e-16 of the coordinates' magnitude).
   double operator()(const Vec3& p) const;
+  // The closest point of the triangles to p, exact as operator() is.
+  Vec3 closest_point(const Vec3& p) const;
   Box3 bounds() const;  // of the triangles
 
   // Fills grid.values from dims, origin and spacing, on every core. The values depend only
   // on the grid, not on the thread count or the scheduling. `progress`, if given, is called
   // with the fraction done (in (0, 1], increasing), one call at a time, from any thread.
   void sample(VoxelGrid& grid, const std::function<void(double)>& progress = {}) const;
+  // As sample(), exact only within `band` of the surface: the grid goes in bricks, and a
+  // brick whose centre is farther than `band` plus the brick's half-diagonal from the surface
+  // takes, at each sample, the sign of its centre and the bound |SD(centre)| - |p - centre|
+  // (the distance is 1-Lipschitz), which is below the exact |SD(p)| and above `band`. Signs
+  // are exact everywhere and values within `band`, as sample()'s; far from the surface the
+  // work is one query per brick.
+  void sample_band(VoxelGrid& grid, double band,
+                   const std::function<void(double)>& progress = {}) const;
 
  private:
   std::unique_ptr<const surface::DistanceData> data_;

@@ -64,6 +64,8 @@ class SurfaceDomain final : public Domain {
   // Per surface, in the order given: its label and the number of surfaces around it.
   const std::vector<Index>& labels() const;
   const std::vector<Index>& depths() const;
+  // Surface s as checked: oriented outward, only the points its triangles use.
+  TriSurface surface(Index s) const;
 
  private:
   std::unique_ptr<const surface::DomainData> data_;

@@ -15,8 +15,8 @@ namespace volmesh::meshers {
 
 struct OptionSpec {
   // The value each type takes (OptionValue): flag bool, integer std::int64_t, real double,
-  // choice std::string.
-  enum class Type { flag, integer, real, choice };
+  // choice and text std::string. A text's form (a list of numbers, say) is the method's to check.
+  enum class Type { flag, integer, real, choice, text };
   std::string name;  // as on the command line, without the dashes: "feature-angle"
   std::string help;  // one line for --help, saying the default where there is one
   Type type = Type::flag;

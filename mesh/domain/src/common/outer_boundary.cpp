@@ -1,13 +1,13 @@
-// Mapping mesh boundary points onto the true boundary of a domain.
+#include "volmesh/domain/outer_boundary.hpp"
+
 #include <cmath>
 #include <limits>
 #include <optional>
 
-#include "volmesh/domain/analytic_closest.hpp"
 #include "volmesh/domain/analytic.hpp"
-#include "volmesh/fem/problems.hpp"
+#include "volmesh/domain/analytic_closest.hpp"
 
-namespace volmesh::fem {
+namespace volmesh {
 namespace {
 
 // project_along_normals, in fractions of the domain's bounding-box diagonal: the first search
@@ -97,7 +97,7 @@ Vec3 project_along_normals(const Domain& domain, const Vec3& p) {
   return q ? *q : p;
 }
 
-PointMap true_boundary_map(const Domain& domain) {
+std::function<Vec3(const Vec3&)> outer_boundary_map(const Domain& domain) {
   const Domain* d = &domain;
   if (const auto* analytic = dynamic_cast<const AnalyticDomain*>(d)) {
     const double step = kSideStep * domain.bounds().size().norm();
@@ -106,4 +106,4 @@ PointMap true_boundary_map(const Domain& domain) {
   return [d](const Vec3& p) { return project_along_normals(*d, p); };
 }
 
-}  // namespace volmesh::fem
+}  // namespace volmesh

@@ -1,0 +1,96 @@
+#pragma once
+// Geometry of a HexMesh's hexes and boundary quads shared by smoothing, untangling, pillowing
+// and projection.
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/hexdc/hex_quality.hpp"
+
+namespace volmesh::hexdc_detail {
+
+// The twelve edges of a hex in VTK corners.
+inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                               {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                               {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+inline std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
+  std::array<Vec3, 8> corners;
+  const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
+  for (std::size_t c = 0; c < 8; ++c) corners[c] = mesh.points[static_cast<std::size_t>(cell[c])];
+  return corners;
+}
+
+// Per hex of the mesh as it is now: a quality measure and whether it passes the ten corner tets.
+struct HexState {
+  std::vector<double> quality;
+  std::vector<bool> valid;
+};
+
+// The state of every hex, its quality by `measure` (a function of the 8 corners).
+template <class Measure>
+HexState hex_state(const HexMesh& mesh, Measure measure) {
+  HexState state;
+  for (Index h = 0; h < mesh.num_cells(); ++h) {
+    const auto corners = hex_corners(mesh, h);
+    state.quality.push_back(measure(corners));
+    state.valid.push_back(hex_corner_tets_positive(corners));
+  }
+  return state;
+}
+
+inline double least_quality(const HexState& state) {
+  return *std::min_element(state.quality.begin(), state.quality.end());
+}
+
+inline Index invalid_count(const HexState& state) {
+  return static_cast<Index>(std::count(state.valid.begin(), state.valid.end(), false));
+}
+
+// Per node, the hexes having it as a corner, in hex order.
+inline std::vector<std::vector<Index>> hexes_of_nodes(const HexMesh& mesh) {
+  std::vector<std::vector<Index>> hexes(mesh.points.size());
+  for (Index h = 0; h < mesh.num_cells(); ++h)
+    for (const Index v : mesh.cells[static_cast<std::size_t>(h)]) {
+      auto& list = hexes[static_cast<std::size_t>(v)];
+      if (list.empty() || list.back() != h) list.push_back(h);
+    }
+  return hexes;
+}
+
+// Per node, the boundary quads having it as a corner, in quad order (empty off the boundary).
+inline std::vector<std::vector<Index>> boundary_quads_of_nodes(const HexMesh& mesh) {
+  std::vector<std::vector<Index>> quads(mesh.points.size());
+  for (std::size_t q = 0; q < mesh.boundary_faces.size(); ++q)
+    for (const Index v : mesh.boundary_faces[q])
+      quads[static_cast<std::size_t>(v)].push_back(static_cast<Index>(q));
+  return quads;
+}
+
+// Half the cross product of the diagonals: the quad's normal times its area, exact for a planar
+// quad, so that quads in an axis plane give an exactly axial normal.
+inline Vec3 quad_vector_area(const HexMesh& mesh, Index q) {
+  const auto& quad = mesh.boundary_faces[static_cast<std::size_t>(q)];
+  const auto p = [&](std::size_t c) { return mesh.points[static_cast<std::size_t>(quad[c])]; };
+  return 0.5 * (p(2) - p(0)).cross(p(3) - p(1));
+}
+
+// The unit sum of the vector areas of `quads`; zero when the areas cancel.
+inline Vec3 node_normal(const HexMesh& mesh, const std::vector<Index>& quads) {
+  Vec3 sum = Vec3::Zero();
+  for (const Index q : quads) sum += quad_vector_area(mesh, q);
+  return sum.normalized();
+}
+
+// A boundary node on a crease or corner: a quad's normal leaves the mean normal by more than the
+// feature angle (or the quads have no mean normal).
+inline bool on_feature(const HexMesh& mesh, const std::vector<Index>& quads, double cos_feature) {
+  const Vec3 normal = node_normal(mesh, quads);
+  if (normal.isZero()) return true;
+  return std::any_of(quads.begin(), quads.end(), [&](Index q) {
+    return quad_vector_area(mesh, q).normalized().dot(normal) < cos_feature;
+  });
+}
+
+}  // namespace volmesh::hexdc_detail

@@ -1,0 +1,74 @@
+#include "volmesh/hexdc/hex_quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/geometry.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
+
+namespace volmesh {
+namespace {
+
+// The twelve edges in VTK corners: bottom loop, top loop, verticals.
+constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                        {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                        {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+constexpr double kRightAngleDeg = 90.0;
+constexpr double kFullTurnDeg = 360.0;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+}  // namespace
+
+std::array<double, 10> hex_corner_tet_volumes(const std::array<Vec3, 8>& p) {
+  std::array<double, 10> volumes{};
+  for (std::size_t t = 0; t < kHexCornerTets.size(); ++t) {
+    const auto& [a, b, c, d] = kHexCornerTets[t];
+    volumes[t] = tet_volume(p[a], p[b], p[c], p[d]);
+  }
+  return volumes;
+}
+
+bool hex_corner_tets_positive(const std::array<Vec3, 8>& corners) {
+  const auto volumes = hex_corner_tet_volumes(corners);
+  return std::all_of(volumes.begin(), volumes.end(), [](double v) { return v > 0.0; });
+}
+
+std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& q) {
+  // Unit normal of the vector area; zero for a quad of no area, whose angles are then 0 or 180.
+  const Vec3 normal = (q[2] - q[0]).cross(q[3] - q[1]).normalized();
+  std::array<double, 4> angles{};
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 next = q[(k + 1) % 4] - q[k], previous = q[(k + 3) % 4] - q[k];
+    // atan2 keeps the digits near 0° and 180° that acos of the normalised dot loses.
+    double angle = std::atan2(next.cross(previous).dot(normal), next.dot(previous)) * kDegPerRad;
+    if (angle < 0.0) angle += kFullTurnDeg;
+    angles[static_cast<std::size_t>(k)] = angle;
+  }
+  return angles;
+}
+
+HexQuality hex_quality(const std::array<Vec3, 8>& p) {
+  HexQuality quality;
+  quality.corner_tets_positive = hex_corner_tets_positive(p);
+  quality.scaled_jacobian = hex_scaled_jacobian(p);
+  for (const auto& face : kHexFaces) {
+    const std::array<Vec3, 4> quad{p[face[0]], p[face[1]], p[face[2]], p[face[3]]};
+    for (const double angle : quad_interior_angles_deg(quad)) {
+      quality.max_quad_angle_deg = std::max(quality.max_quad_angle_deg, angle);
+      quality.max_quad_distortion_deg =
+          std::max(quality.max_quad_distortion_deg, std::abs(angle - kRightAngleDeg));
+    }
+  }
+  quality.min_edge = std::numeric_limits<double>::infinity();
+  for (const auto& [a, b] : kHexEdges) {
+    const double length = (p[b] - p[a]).norm();
+    quality.min_edge = std::min(quality.min_edge, length);
+    quality.max_edge = std::max(quality.max_edge, length);
+  }
+  return quality;
+}
+
+}  // namespace volmesh

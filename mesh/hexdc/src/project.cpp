@@ -1,0 +1,143 @@
+#include "volmesh/hexdc/project.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "feature_point.hpp"
+#include "hex_mesh_geometry.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/hexdc/hex_quality.hpp"
+#include "volmesh/hexdc/smoothing.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
+
+namespace volmesh {
+namespace {
+
+using namespace hexdc_detail;
+
+struct HexGrade {
+  double scaled_jacobian = 0.0;
+  bool valid = false;  // hex_corner_tets_positive
+};
+
+HexGrade grade(const HexMesh& mesh, Index h) {
+  const auto corners = hex_corners(mesh, h);
+  return {hex_scaled_jacobian(corners), hex_corner_tets_positive(corners)};
+}
+
+// The least scaled Jacobian and the hexes failing the ten corner tets, over the whole mesh.
+struct MeshGrade {
+  double min_scaled_jacobian = std::numeric_limits<double>::infinity();
+  Index invalid = 0;
+};
+
+MeshGrade grade_mesh(const HexMesh& mesh) {
+  MeshGrade g;
+  for (Index h = 0; h < mesh.num_cells(); ++h) {
+    const HexGrade one = grade(mesh, h);
+    g.min_scaled_jacobian = std::min(g.min_scaled_jacobian, one.scaled_jacobian);
+    g.invalid += one.valid ? 0 : 1;
+  }
+  return g;
+}
+
+// Whether moving node v to `target` keeps its hexes acceptable (see the header); the node is
+// left at `target` if so, restored otherwise.
+bool guarded_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v,
+                  const Vec3& target, double floor) {
+  std::vector<HexGrade> before;
+  double least_before = std::numeric_limits<double>::infinity();
+  for (const Index h : hexes) {
+    before.push_back(grade(mesh, h));
+    least_before = std::min(least_before, before.back().scaled_jacobian);
+  }
+  const double least_allowed = std::min(least_before, floor);
+  const Vec3 old_point = mesh.points[v];
+  mesh.points[v] = target;
+  for (std::size_t i = 0; i < hexes.size(); ++i) {
+    const HexGrade after = grade(mesh, hexes[i]);
+    if (after.scaled_jacobian < least_allowed || (before[i].valid && !after.valid)) {
+      mesh.points[v] = old_point;
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_point,
+                              const ProjectOptions& options) {
+  if (options.halvings < 0 || options.passes < 1)
+    throw InputError("project_boundary: halvings must not be negative, passes at least 1");
+  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
+    throw InputError("project_boundary: feature angle must lie in [0, 180] degrees");
+  if (!(options.tolerance >= 0.0))
+    throw InputError("project_boundary: tolerance must not be negative");
+  ProjectStats stats;
+  if (mesh.cells.empty()) return stats;
+
+  const std::vector<std::vector<Index>> hexes = hexes_of_nodes(mesh);
+  const std::vector<std::vector<Index>> quads = boundary_quads_of_nodes(mesh);
+  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
+  Vec3 lo = mesh.points.front(), hi = lo;
+  for (const Vec3& p : mesh.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double on_surface = options.tolerance * (hi - lo).norm();
+
+  // The nodes to project and the feature nodes, in index order.
+  std::vector<std::size_t> movable, features;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    if (quads[v].empty() || hexes[v].empty()) continue;
+    ++stats.boundary_nodes;
+    if (on_feature(mesh, quads[v], cos_feature)) {
+      features.push_back(v);
+      continue;
+    }
+    const double distance = (closest_point(mesh.points[v]) - mesh.points[v]).norm();
+    stats.max_distance_before = std::max(stats.max_distance_before, distance);
+    movable.push_back(v);
+  }
+  stats.feature_nodes = static_cast<Index>(features.size());
+
+  const MeshGrade before = grade_mesh(mesh);
+  stats.min_scaled_jacobian_before = before.min_scaled_jacobian;
+  stats.invalid_hexes_before = before.invalid;
+  SmoothingOptions smoothing;
+  smoothing.feature_angle_deg = options.feature_angle_deg;
+  const auto move = [&](std::size_t v, const Vec3& target) {
+    Vec3 step = target - mesh.points[v];
+    if (step.norm() <= on_surface) return;
+    for (int k = 0; k <= options.halvings; ++k, step *= 0.5)
+      if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, options.min_scaled_jacobian))
+        return;
+  };
+  for (int pass = 0; pass < options.passes; ++pass) {
+    if (pass > 0) smooth_hexes(mesh, smoothing);
+    // Features first, so that the nodes beside them are projected next to where they end.
+    for (const std::size_t v : features)
+      move(v, feature_point(mesh, quads[v], closest_point, v, shortest_edge(mesh, hexes[v], v)));
+    for (const std::size_t v : movable) move(v, closest_point(mesh.points[v]));
+  }
+
+  for (const std::size_t v : movable) {
+    const double distance = (closest_point(mesh.points[v]) - mesh.points[v]).norm();
+    if (distance <= on_surface) continue;
+    ++stats.held_back;
+    stats.max_distance_left = std::max(stats.max_distance_left, distance);
+  }
+  for (const std::size_t v : features)
+    stats.max_feature_distance = std::max(
+        stats.max_feature_distance, (closest_point(mesh.points[v]) - mesh.points[v]).norm());
+  stats.projected = stats.boundary_nodes - stats.feature_nodes - stats.held_back;
+  const MeshGrade after = grade_mesh(mesh);
+  stats.min_scaled_jacobian_after = after.min_scaled_jacobian;
+  stats.invalid_hexes_after = after.invalid;
+  return stats;
+}
+
+}  // namespace volmesh

@@ -1,0 +1,144 @@
+#include "volmesh/hexdc/smoothing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "hex_mesh_geometry.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/hexdc/hex_quality.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
+
+namespace volmesh {
+namespace {
+
+using namespace hexdc_detail;
+
+// A step shorter than this fraction of an edge at the node counts as no move:
+// a converged node would otherwise be "moved" by round-off in every sweep.
+constexpr double kNegligibleStep = 1e-12;
+
+struct NodeLinks {
+  std::vector<std::vector<Index>> hexes;       // hexes having the node as a corner
+  std::vector<std::vector<Index>> neighbours;  // edge neighbours through any hex edge
+  std::vector<std::vector<Index>> boundary_neighbours;  // through boundary-quad edges
+  std::vector<std::vector<Index>> quads;                // boundary quads having the node
+};
+
+void add_unique(std::vector<Index>& list, Index value) {
+  if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
+}
+
+NodeLinks link_nodes(const HexMesh& mesh) {
+  const auto n = static_cast<std::size_t>(mesh.num_points());
+  NodeLinks links{std::vector<std::vector<Index>>(n), std::vector<std::vector<Index>>(n),
+                  std::vector<std::vector<Index>>(n), std::vector<std::vector<Index>>(n)};
+  for (Index h = 0; h < mesh.num_cells(); ++h) {
+    const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
+    for (const Index v : cell) add_unique(links.hexes[static_cast<std::size_t>(v)], h);
+    for (const auto& [a, b] : kHexEdges) {
+      add_unique(links.neighbours[static_cast<std::size_t>(cell[a])], cell[b]);
+      add_unique(links.neighbours[static_cast<std::size_t>(cell[b])], cell[a]);
+    }
+  }
+  for (std::size_t q = 0; q < mesh.boundary_faces.size(); ++q) {
+    const auto& quad = mesh.boundary_faces[q];
+    for (std::size_t c = 0; c < 4; ++c) {
+      const Index v = quad[c], next = quad[(c + 1) % 4];
+      links.quads[static_cast<std::size_t>(v)].push_back(static_cast<Index>(q));
+      add_unique(links.boundary_neighbours[static_cast<std::size_t>(v)], next);
+      add_unique(links.boundary_neighbours[static_cast<std::size_t>(next)], v);
+    }
+  }
+  return links;
+}
+
+Vec3 mean_of(const HexMesh& mesh, const std::vector<Index>& nodes) {
+  Vec3 sum = Vec3::Zero();
+  for (const Index v : nodes) sum += mesh.points[static_cast<std::size_t>(v)];
+  return sum / static_cast<double>(nodes.size());
+}
+
+// The full Laplacian step of node v; on the boundary, projected onto the tangent plane.
+Vec3 laplacian_step(const HexMesh& mesh, const NodeLinks& links, std::size_t v) {
+  const Vec3& x = mesh.points[v];
+  if (links.quads[v].empty()) return mean_of(mesh, links.neighbours[v]) - x;
+  const Vec3 step = mean_of(mesh, links.boundary_neighbours[v]) - x;
+  const Vec3 normal = node_normal(mesh, links.quads[v]);
+  return step - step.dot(normal) * normal;
+}
+
+// Moves node v to `target` if none of its hexes gets worse (see the header), updating `state`;
+// otherwise restores it.
+bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, const Vec3& target,
+              HexState& state) {
+  double old_min = std::numeric_limits<double>::infinity();
+  for (const Index h : hexes)
+    old_min = std::min(old_min, state.quality[static_cast<std::size_t>(h)]);
+  const Vec3 old_point = mesh.points[v];
+  mesh.points[v] = target;
+  std::vector<double> new_sj;
+  std::vector<bool> new_valid;
+  for (const Index h : hexes) {
+    const auto corners = hex_corners(mesh, h);
+    new_sj.push_back(hex_scaled_jacobian(corners));
+    new_valid.push_back(hex_corner_tets_positive(corners));
+    const bool was_valid = state.valid[static_cast<std::size_t>(h)];
+    if (new_sj.back() < old_min || (was_valid && !new_valid.back())) {
+      mesh.points[v] = old_point;
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < hexes.size(); ++i) {
+    const auto h = static_cast<std::size_t>(hexes[i]);
+    state.quality[h] = new_sj[i];
+    state.valid[h] = new_valid[i];
+  }
+  return true;
+}
+
+}  // namespace
+
+SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
+  if (options.sweeps < 0 || options.halvings < 0)
+    throw InputError("smooth_hexes: sweeps and halvings must not be negative");
+  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
+    throw InputError("smooth_hexes: feature angle must lie in [0, 180] degrees");
+  SmoothingStats stats;
+  if (mesh.cells.empty()) return stats;
+  const NodeLinks links = link_nodes(mesh);
+  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
+  std::vector<bool> movable(mesh.points.size());
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    movable[v] = !links.hexes[v].empty() &&
+                 (links.quads[v].empty() || !on_feature(mesh, links.quads[v], cos_feature));
+
+  HexState state = hex_state(mesh, hex_scaled_jacobian);
+  stats.min_scaled_jacobian_before = least_quality(state);
+  stats.invalid_hexes_before = invalid_count(state);
+  for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+    Index moved = 0;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+      if (!movable[v]) continue;
+      Vec3 step = laplacian_step(mesh, links, v);
+      const double edge =
+          (mesh.points[v] - mesh.points[static_cast<std::size_t>(links.neighbours[v].front())])
+              .norm();
+      if (step.norm() <= kNegligibleStep * edge) continue;
+      bool accepted = false;
+      for (int k = 0; k <= options.halvings && !accepted; ++k, step *= 0.5)
+        accepted = try_move(mesh, links.hexes[v], v, mesh.points[v] + step, state);
+      ++(accepted ? stats.moves_accepted : stats.moves_rejected);
+      moved += accepted ? 1 : 0;
+    }
+    ++stats.sweeps;
+    stats.min_scaled_jacobian_per_sweep.push_back(least_quality(state));
+    if (moved == 0) break;
+  }
+  stats.min_scaled_jacobian_after = least_quality(state);
+  stats.invalid_hexes_after = invalid_count(state);
+  return stats;
+}
+
+}  // namespace volmesh
