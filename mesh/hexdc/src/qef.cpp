@@ -15,7 +15,8 @@ QefVertex solve_qef(std::span<const EdgeCrossing> crossings, const Eigen::Aligne
 
   // Rows nᵢᵀ and right-hand sides nᵢ · (pᵢ − m): the system about the mass point, so that
   // the dropped directions leave x at m.
-  Eigen::MatrixX3d a(n, 3);
+  // Dynamic columns: Eigen computes a thin U only for those.
+  Eigen::MatrixXd a(n, 3);
   Eigen::VectorXd r(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const EdgeCrossing& c = crossings[static_cast<std::size_t>(i)];
@@ -23,7 +24,7 @@ QefVertex solve_qef(std::span<const EdgeCrossing> crossings, const Eigen::Aligne
     r(i) = c.normal.dot(c.point - mass);
   }
 
-  const Eigen::JacobiSVD<Eigen::MatrixX3d> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& sigma = svd.singularValues();  // descending
   const Eigen::VectorXd ut_r = svd.matrixU().transpose() * r;
   Vec3 offset = Vec3::Zero();
