@@ -3,12 +3,25 @@
 // and projection.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
 #include <vector>
 
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 
 namespace volmesh::hexdc_detail {
+
+// The feature angle every stage takes (smoothing, pillowing, projection, untangling): throws
+// InputError "STAGE: feature angle must lie in [0, 180] degrees" outside that range, else
+// returns its cosine, which the feature test compares against.
+inline double feature_cosine(const char* stage, double degrees) {
+  if (!(degrees >= 0.0 && degrees <= 180.0))
+    throw InputError(std::string(stage) + ": feature angle must lie in [0, 180] degrees");
+  return std::cos(degrees * std::numbers::pi / 180.0);
+}
 
 // The twelve edges of a hex in VTK corners.
 inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},

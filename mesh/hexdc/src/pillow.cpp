@@ -68,7 +68,7 @@ struct Copies {
   std::vector<double> offset;         // per boundary node
 };
 
-Copies plan_copies(const HexMesh& mesh, const PillowOptions& options) {
+Copies plan_copies(const HexMesh& mesh, const PillowOptions& options, double cos_feature) {
   const std::size_t n = mesh.points.size();
   std::vector<std::vector<Index>> quads(n);
   for (std::size_t q = 0; q < mesh.boundary_faces.size(); ++q)
@@ -82,7 +82,6 @@ Copies plan_copies(const HexMesh& mesh, const PillowOptions& options) {
       shortest[u] = std::min(shortest[u], length);
       shortest[w] = std::min(shortest[w], length);
     }
-  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
   Copies copies;
   for (std::size_t v = 0; v < n; ++v) {
     if (quads[v].empty()) continue;
@@ -148,8 +147,7 @@ PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options) {
   if (!(options.offset_fraction > 0.0 && options.offset_fraction < 1.0))
     throw InputError("pillow_boundary: the offset fraction must lie in (0, 1)");
   if (options.halvings < 0) throw InputError("pillow_boundary: halvings must not be negative");
-  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
-    throw InputError("pillow_boundary: feature angle must lie in [0, 180] degrees");
+  const double cos_feature = feature_cosine("pillow_boundary", options.feature_angle_deg);
   PillowStats stats;
   if (mesh.cells.empty()) return stats;
   const Quality before = quality(mesh);
@@ -157,7 +155,7 @@ PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options) {
   stats.min_scaled_jacobian_before = before.min_scaled_jacobian;
   stats.multi_boundary_hexes_before = multi_boundary_hexes(mesh);
 
-  Copies copies = plan_copies(mesh, options);
+  Copies copies = plan_copies(mesh, options, cos_feature);
   const std::vector<Index> owner = quad_owners(mesh);
   const Index first_copy = mesh.num_points();
   std::vector<Index> inner(mesh.points.size(), -1);

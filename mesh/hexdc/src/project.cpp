@@ -72,8 +72,7 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
                               const ProjectOptions& options) {
   if (options.halvings < 0 || options.passes < 1)
     throw InputError("project_boundary: halvings must not be negative, passes at least 1");
-  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
-    throw InputError("project_boundary: feature angle must lie in [0, 180] degrees");
+  const double cos_feature = feature_cosine("project_boundary", options.feature_angle_deg);
   if (!(options.tolerance >= 0.0))
     throw InputError("project_boundary: tolerance must not be negative");
   ProjectStats stats;
@@ -81,7 +80,6 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
 
   const std::vector<std::vector<Index>> hexes = hexes_of_nodes(mesh);
   const std::vector<std::vector<Index>> quads = boundary_quads_of_nodes(mesh);
-  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
   Vec3 lo = mesh.points.front(), hi = lo;
   for (const Vec3& p : mesh.points) {
     lo = lo.cwiseMin(p);

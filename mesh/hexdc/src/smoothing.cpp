@@ -103,12 +103,10 @@ bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, con
 SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
   if (options.sweeps < 0 || options.halvings < 0)
     throw InputError("smooth_hexes: sweeps and halvings must not be negative");
-  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
-    throw InputError("smooth_hexes: feature angle must lie in [0, 180] degrees");
+  const double cos_feature = feature_cosine("smooth_hexes", options.feature_angle_deg);
   SmoothingStats stats;
   if (mesh.cells.empty()) return stats;
   const NodeLinks links = link_nodes(mesh);
-  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
   std::vector<bool> movable(mesh.points.size());
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     movable[v] = !links.hexes[v].empty() &&

@@ -201,14 +201,12 @@ UntangleStats untangle_hexes(HexMesh& mesh, const UntangleOptions& options,
   if (!(options.initial_step > 0.0 && options.initial_step <= 1.0 && options.final_step > 0.0 &&
         options.final_step < options.initial_step))
     throw InputError("untangle_hexes: steps must satisfy 0 < final_step < initial_step <= 1");
-  if (!(options.feature_angle_deg >= 0.0 && options.feature_angle_deg <= 180.0))
-    throw InputError("untangle_hexes: feature angle must lie in [0, 180] degrees");
+  const double cos_feature = feature_cosine("untangle_hexes", options.feature_angle_deg);
   UntangleStats stats;
   if (mesh.cells.empty()) return stats;
   const NodeHexes links = link_node_hexes(mesh);
   // Interior nodes move; boundary nodes only onto a given surface, feature nodes onto their
   // features there.
-  const double cos_feature = std::cos(options.feature_angle_deg * std::numbers::pi / 180.0);
   std::vector<bool> movable(mesh.points.size()), feature(mesh.points.size());
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     const bool on_boundary = !links.quads[v].empty();
