@@ -45,12 +45,26 @@ struct HexState {
 template <class Measure>
 HexState hex_state(const HexMesh& mesh, Measure measure) {
   HexState state;
+  state.quality.reserve(mesh.cells.size());
+  state.valid.reserve(mesh.cells.size());
   for (Index h = 0; h < mesh.num_cells(); ++h) {
     const auto corners = hex_corners(mesh, h);
     state.quality.push_back(measure(corners));
     state.valid.push_back(hex_corner_tets_positive(corners));
   }
   return state;
+}
+
+// Marks every node sharing a hex or a boundary quad with node v: the nodes whose moves are
+// judged on a hex or a quad that a move of v changes.
+inline void mark_around(const HexMesh& mesh, const std::vector<Index>& hexes,
+                        const std::vector<Index>& quads, std::vector<char>& marked) {
+  for (const Index h : hexes)
+    for (const Index u : mesh.cells[static_cast<std::size_t>(h)])
+      marked[static_cast<std::size_t>(u)] = 1;
+  for (const Index q : quads)
+    for (const Index u : mesh.boundary_faces[static_cast<std::size_t>(q)])
+      marked[static_cast<std::size_t>(u)] = 1;
 }
 
 inline double least_quality(const HexState& state) {

@@ -19,6 +19,14 @@ constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, 
 constexpr double kRightAngleDeg = 90.0;
 constexpr double kFullTurnDeg = 360.0;
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+// The two inner tets of kHexCornerTets; the other eight are the corner tets of the scaled
+// Jacobian's corners, with the same corner and edge order.
+constexpr std::array<std::size_t, 2> kInnerTets{4, 9};
+// The inner tets' edges at their first corner are face diagonals, √2 each, in the unit cube,
+// where 6 V = 2: the normalised volume 2 / (2√2) times √2 is 1.
+constexpr double kInnerTetScale = std::numbers::sqrt2;
+// 6 V of a tet from the triple product of its edges, as tet_volume divides it.
+constexpr double kTetVolumeDivisor = 6.0;
 
 }  // namespace
 
@@ -48,6 +56,30 @@ std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& q) {
     angles[static_cast<std::size_t>(k)] = angle;
   }
   return angles;
+}
+
+HexGrade hex_grade(const std::array<Vec3, 8>& p) {
+  const HexJacobians jacobians = hex_jacobians(p);
+  bool positive = true;
+  for (const double determinant : jacobians.corner_determinants)
+    positive = positive && determinant / kTetVolumeDivisor > 0.0;
+  for (const std::size_t t : kInnerTets) {
+    const auto& [a, b, c, d] = kHexCornerTets[t];
+    positive = positive && tet_volume(p[a], p[b], p[c], p[d]) > 0.0;
+  }
+  return {jacobians.scaled_jacobian, positive};
+}
+
+double hex_shape_quality(const std::array<Vec3, 8>& p) {
+  double quality = hex_scaled_jacobian(p);
+  for (const std::size_t t : kInnerTets) {
+    const auto& [a, b, c, d] = kHexCornerTets[t];
+    const Vec3 e1 = p[b] - p[a], e2 = p[c] - p[a], e3 = p[d] - p[a];
+    const double lengths = e1.norm() * e2.norm() * e3.norm();
+    const double normalised = lengths > 0.0 ? kInnerTetScale * e1.dot(e2.cross(e3)) / lengths : 0.0;
+    quality = std::min(quality, normalised);
+  }
+  return quality;
 }
 
 HexQuality hex_quality(const std::array<Vec3, 8>& p) {

@@ -9,7 +9,6 @@
 #include "hex_mesh_geometry.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
-#include "volmesh/quality/hex_metrics.hpp"
 
 namespace volmesh {
 namespace {
@@ -54,9 +53,9 @@ struct Quality {
 Quality quality(const HexMesh& mesh) {
   Quality q;
   for (Index h = 0; h < mesh.num_cells(); ++h) {
-    const auto corners = hex_corners(mesh, h);
-    q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, hex_scaled_jacobian(corners));
-    q.invalid += hex_corner_tets_positive(corners) ? 0 : 1;
+    const HexGrade grade = hex_grade(hex_corners(mesh, h));
+    q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, grade.scaled_jacobian);
+    q.invalid += grade.corner_tets_positive ? 0 : 1;
   }
   return q;
 }

@@ -7,61 +7,41 @@
 
 #include "feature_point.hpp"
 #include "hex_mesh_geometry.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 #include "volmesh/hexdc/smoothing.hpp"
-#include "volmesh/quality/hex_metrics.hpp"
 
 namespace volmesh {
 namespace {
 
 using namespace hexdc_detail;
 
-struct HexGrade {
-  double scaled_jacobian = 0.0;
-  bool valid = false;  // hex_corner_tets_positive
-};
-
-HexGrade grade(const HexMesh& mesh, Index h) {
-  const auto corners = hex_corners(mesh, h);
-  return {hex_scaled_jacobian(corners), hex_corner_tets_positive(corners)};
-}
-
-// The least scaled Jacobian and the hexes failing the ten corner tets, over the whole mesh.
-struct MeshGrade {
-  double min_scaled_jacobian = std::numeric_limits<double>::infinity();
-  Index invalid = 0;
-};
-
-MeshGrade grade_mesh(const HexMesh& mesh) {
-  MeshGrade g;
-  for (Index h = 0; h < mesh.num_cells(); ++h) {
-    const HexGrade one = grade(mesh, h);
-    g.min_scaled_jacobian = std::min(g.min_scaled_jacobian, one.scaled_jacobian);
-    g.invalid += one.valid ? 0 : 1;
-  }
-  return g;
-}
-
 // Whether moving node v to `target` keeps its hexes acceptable (see the header); the node is
-// left at `target` if so, restored otherwise.
+// left at `target` and `state` updated if so, the node restored otherwise. `trial` holds the
+// grades of the hexes judged so far.
 bool guarded_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v,
-                  const Vec3& target, double floor) {
-  std::vector<HexGrade> before;
+                  const Vec3& target, double floor, HexState& state,
+                  std::vector<HexGrade>& trial) {
   double least_before = std::numeric_limits<double>::infinity();
-  for (const Index h : hexes) {
-    before.push_back(grade(mesh, h));
-    least_before = std::min(least_before, before.back().scaled_jacobian);
-  }
+  for (const Index h : hexes)
+    least_before = std::min(least_before, state.quality[static_cast<std::size_t>(h)]);
   const double least_allowed = std::min(least_before, floor);
   const Vec3 old_point = mesh.points[v];
   mesh.points[v] = target;
-  for (std::size_t i = 0; i < hexes.size(); ++i) {
-    const HexGrade after = grade(mesh, hexes[i]);
-    if (after.scaled_jacobian < least_allowed || (before[i].valid && !after.valid)) {
+  trial.clear();
+  for (const Index h : hexes) {
+    trial.push_back(hex_grade(hex_corners(mesh, h)));
+    if (trial.back().scaled_jacobian < least_allowed ||
+        (state.valid[static_cast<std::size_t>(h)] && !trial.back().corner_tets_positive)) {
       mesh.points[v] = old_point;
       return false;
     }
+  }
+  for (std::size_t i = 0; i < hexes.size(); ++i) {
+    const auto h = static_cast<std::size_t>(hexes[i]);
+    state.quality[h] = trial[i].scaled_jacobian;
+    state.valid[h] = trial[i].corner_tets_positive;
   }
   return true;
 }
@@ -102,20 +82,25 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
   }
   stats.feature_nodes = static_cast<Index>(features.size());
 
-  const MeshGrade before = grade_mesh(mesh);
-  stats.min_scaled_jacobian_before = before.min_scaled_jacobian;
-  stats.invalid_hexes_before = before.invalid;
+  HexState state = hex_state(mesh, hex_scaled_jacobian);
+  stats.min_scaled_jacobian_before = least_quality(state);
+  stats.invalid_hexes_before = invalid_count(state);
   SmoothingOptions smoothing;
   smoothing.feature_angle_deg = options.feature_angle_deg;
+  std::vector<HexGrade> trial;
   const auto move = [&](std::size_t v, const Vec3& target) {
     Vec3 step = target - mesh.points[v];
     if (step.norm() <= on_surface) return;
     for (int k = 0; k <= options.halvings; ++k, step *= 0.5)
-      if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, options.min_scaled_jacobian))
+      if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, options.min_scaled_jacobian,
+                       state, trial))
         return;
   };
   for (int pass = 0; pass < options.passes; ++pass) {
-    if (pass > 0) smooth_hexes(mesh, smoothing);
+    if (pass > 0) {
+      smooth_hexes(mesh, smoothing);
+      state = hex_state(mesh, hex_scaled_jacobian);
+    }
     // Features first, so that the nodes beside them are projected next to where they end.
     for (const std::size_t v : features)
       move(v, feature_point(mesh, quads[v], closest_point, v, shortest_edge(mesh, hexes[v], v)));
@@ -132,9 +117,8 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
     stats.max_feature_distance = std::max(
         stats.max_feature_distance, (closest_point(mesh.points[v]) - mesh.points[v]).norm());
   stats.projected = stats.boundary_nodes - stats.feature_nodes - stats.held_back;
-  const MeshGrade after = grade_mesh(mesh);
-  stats.min_scaled_jacobian_after = after.min_scaled_jacobian;
-  stats.invalid_hexes_after = after.invalid;
+  stats.min_scaled_jacobian_after = least_quality(state);
+  stats.invalid_hexes_after = invalid_count(state);
   return stats;
 }
 

@@ -70,30 +70,27 @@ Vec3 laplacian_step(const HexMesh& mesh, const NodeLinks& links, std::size_t v) 
 }
 
 // Moves node v to `target` if none of its hexes gets worse (see the header), updating `state`;
-// otherwise restores it.
+// otherwise restores it. `trial` holds the grades of the hexes judged so far.
 bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, const Vec3& target,
-              HexState& state) {
+              HexState& state, std::vector<HexGrade>& trial) {
   double old_min = std::numeric_limits<double>::infinity();
   for (const Index h : hexes)
     old_min = std::min(old_min, state.quality[static_cast<std::size_t>(h)]);
   const Vec3 old_point = mesh.points[v];
   mesh.points[v] = target;
-  std::vector<double> new_sj;
-  std::vector<bool> new_valid;
+  trial.clear();
   for (const Index h : hexes) {
-    const auto corners = hex_corners(mesh, h);
-    new_sj.push_back(hex_scaled_jacobian(corners));
-    new_valid.push_back(hex_corner_tets_positive(corners));
+    trial.push_back(hex_grade(hex_corners(mesh, h)));
     const bool was_valid = state.valid[static_cast<std::size_t>(h)];
-    if (new_sj.back() < old_min || (was_valid && !new_valid.back())) {
+    if (trial.back().scaled_jacobian < old_min || (was_valid && !trial.back().corner_tets_positive)) {
       mesh.points[v] = old_point;
       return false;
     }
   }
   for (std::size_t i = 0; i < hexes.size(); ++i) {
     const auto h = static_cast<std::size_t>(hexes[i]);
-    state.quality[h] = new_sj[i];
-    state.valid[h] = new_valid[i];
+    state.quality[h] = trial[i].scaled_jacobian;
+    state.valid[h] = trial[i].corner_tets_positive;
   }
   return true;
 }
@@ -115,18 +112,34 @@ SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
   HexState state = hex_state(mesh, hex_scaled_jacobian);
   stats.min_scaled_jacobian_before = least_quality(state);
   stats.invalid_hexes_before = invalid_count(state);
+  // A node's move depends only on the nodes sharing a hex or a boundary quad with it: one that
+  // found no move stays unvisited until one of those moves (its `changed` mark), since it would
+  // find none again. Its last outcome is counted again for it, as if it had been visited.
+  std::vector<char> changed(mesh.points.size(), 1);
+  std::vector<char> rejected(mesh.points.size(), 0);  // else its step was negligible
+  std::vector<HexGrade> trial;
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     Index moved = 0;
     for (std::size_t v = 0; v < mesh.points.size(); ++v) {
       if (!movable[v]) continue;
+      if (!changed[v]) {
+        stats.moves_rejected += rejected[v];
+        continue;
+      }
+      changed[v] = 0;
       Vec3 step = laplacian_step(mesh, links, v);
       const double edge =
           (mesh.points[v] - mesh.points[static_cast<std::size_t>(links.neighbours[v].front())])
               .norm();
-      if (step.norm() <= kNegligibleStep * edge) continue;
+      if (step.norm() <= kNegligibleStep * edge) {
+        rejected[v] = 0;
+        continue;
+      }
       bool accepted = false;
       for (int k = 0; k <= options.halvings && !accepted; ++k, step *= 0.5)
-        accepted = try_move(mesh, links.hexes[v], v, mesh.points[v] + step, state);
+        accepted = try_move(mesh, links.hexes[v], v, mesh.points[v] + step, state, trial);
+      rejected[v] = accepted ? 0 : 1;
+      if (accepted) mark_around(mesh, links.hexes[v], links.quads[v], changed);
       ++(accepted ? stats.moves_accepted : stats.moves_rejected);
       moved += accepted ? 1 : 0;
     }

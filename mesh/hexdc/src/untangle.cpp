@@ -17,11 +17,6 @@ namespace {
 
 using namespace hexdc_detail;
 
-// The two inner tets of kHexCornerTets (the other eight are the corner Jacobians).
-constexpr std::array<std::size_t, 2> kInnerTets{4, 9};
-// Their edges at the first corner are face diagonals, √2 each, in the unit cube, where 6 V = 2:
-// the normalised volume 2 / (2√2) times √2 is 1.
-constexpr double kInnerTetScale = std::numbers::sqrt2;
 // The central-difference step of the ascent direction, of the node's shortest edge.
 constexpr double kGradientStep = 1e-4;
 // A node's least quality must rise by more than this to count as an improvement, so that a
@@ -180,18 +175,6 @@ bool optimise_node(HexMesh& mesh, const NodeHexes& links, std::size_t v, bool fe
 
 }  // namespace
 
-double hex_shape_quality(const std::array<Vec3, 8>& p) {
-  double quality = hex_scaled_jacobian(p);
-  for (const std::size_t t : kInnerTets) {
-    const auto& [a, b, c, d] = kHexCornerTets[t];
-    const Vec3 e1 = p[b] - p[a], e2 = p[c] - p[a], e3 = p[d] - p[a];
-    const double lengths = e1.norm() * e2.norm() * e3.norm();
-    const double normalised = lengths > 0.0 ? kInnerTetScale * e1.dot(e2.cross(e3)) / lengths : 0.0;
-    quality = std::min(quality, normalised);
-  }
-  return quality;
-}
-
 UntangleStats untangle_hexes(HexMesh& mesh, const UntangleOptions& options,
                              const SurfaceProjector& surface) {
   if (!(options.target_quality > 0.0 && options.target_quality <= 1.0))
@@ -220,8 +203,13 @@ UntangleStats untangle_hexes(HexMesh& mesh, const UntangleOptions& options,
   stats.invalid_hexes_before = invalid_count(state);
 
   std::vector<bool> active(mesh.points.size());
+  // A node's search depends only on the nodes sharing a hex or a boundary quad with it and on
+  // its feature flag: one that found no move is not searched again until one of those nodes
+  // moves (its `changed` mark), since it would find none again.
+  std::vector<char> changed(mesh.points.size());
   // Sweeps over the movable nodes of the hexes below `threshold`.
   const auto run_sweeps = [&](double threshold) {
+    std::fill(changed.begin(), changed.end(), 1);
     for (int sweep = 0; sweep < options.sweeps; ++sweep) {
       std::fill(active.begin(), active.end(), false);
       for (Index h = 0; h < mesh.num_cells(); ++h)
@@ -229,9 +217,13 @@ UntangleStats untangle_hexes(HexMesh& mesh, const UntangleOptions& options,
           for (const Index v : mesh.cells[static_cast<std::size_t>(h)])
             active[static_cast<std::size_t>(v)] = movable[static_cast<std::size_t>(v)];
       Index moved = 0;
-      for (std::size_t v = 0; v < active.size(); ++v)
-        if (active[v] && optimise_node(mesh, links, v, feature[v], state, options, surface))
-          ++moved;
+      for (std::size_t v = 0; v < active.size(); ++v) {
+        if (!active[v] || !changed[v]) continue;
+        changed[v] = 0;
+        if (!optimise_node(mesh, links, v, feature[v], state, options, surface)) continue;
+        mark_around(mesh, links.hexes[v], links.quads[v], changed);
+        ++moved;
+      }
       ++stats.sweeps;
       stats.moves_accepted += moved;
       if (moved == 0) break;

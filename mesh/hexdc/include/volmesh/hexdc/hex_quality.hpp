@@ -37,6 +37,21 @@ bool hex_corner_tets_positive(const std::array<Vec3, 8>& corners);
 // A non-planar quad's angles are those of its edges as they are, not projected.
 std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& quad);
 
+// What smoothing and projection judge a move by, from one pass over the corners (the eight
+// corner tets of kHexCornerTets are the corner Jacobians of the scaled Jacobian, so they are
+// computed once for both).
+struct HexGrade {
+  double scaled_jacobian = 0.0;       // hex_scaled_jacobian
+  bool corner_tets_positive = false;  // hex_corner_tets_positive
+};
+HexGrade hex_grade(const std::array<Vec3, 8>& corners);
+
+// What untangling judges a move by: the least of the scaled Jacobian and the normalised volumes
+// of the two inner corner tets (6 V over the product of the tet's three edges at its first
+// corner, scaled to 1 in a cube). Positive exactly when the hex passes the ten corner tets and
+// its scaled Jacobian is positive.
+double hex_shape_quality(const std::array<Vec3, 8>& corners);
+
 struct HexQuality {
   bool corner_tets_positive = false;  // hex_corner_tets_positive
   double scaled_jacobian = 0.0;       // Verdict's, over the 8 corners and the centre

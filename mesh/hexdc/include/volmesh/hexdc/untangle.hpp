@@ -37,8 +37,6 @@
 
 namespace volmesh {
 
-// The least of the scaled Jacobian and the normalised volumes of the two inner corner tets.
-double hex_shape_quality(const std::array<Vec3, 8>& corners);
 
 struct UntangleOptions {
   // Nodes of hexes below this quality are optimised: the aim for the least scaled

@@ -15,4 +15,13 @@ namespace volmesh {
 // is degenerate (docs/verification.md, "Quality measures").
 double hex_scaled_jacobian(const std::array<Vec3, 8>& corners);
 
+// The scaled Jacobian together with the determinants it is made of, from one pass over the
+// corners: corner_determinants[k] = det(e1, e2, e3) at corner k, in Verdict's edge order, which
+// is 6 times the volume of the tet of corner k and its three edge neighbours.
+struct HexJacobians {
+  std::array<double, 8> corner_determinants{};
+  double scaled_jacobian = 0.0;  // hex_scaled_jacobian
+};
+HexJacobians hex_jacobians(const std::array<Vec3, 8>& corners);
+
 }  // namespace volmesh
