@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -53,6 +54,42 @@ HexState hex_state(const HexMesh& mesh, Measure measure) {
     state.valid.push_back(hex_corner_tets_positive(corners));
   }
   return state;
+}
+
+// Moves node v to `target` when every hex of `hexes` (v's) passing the ten corner tets still
+// does and the least scaled Jacobian over them stays at or above min(what it was, `floor`),
+// updating `state` (whose quality is the scaled Jacobian); otherwise restores the node. The hex
+// `hexes[first]` is judged first and, on a rejection, `first` becomes the hex that failed: the
+// hex that failed a step usually fails its half too, so a rejection costs one grade, not all.
+// `trial` holds the grades of the hexes judged so far.
+inline bool guarded_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v,
+                         const Vec3& target, double floor, HexState& state, std::size_t& first,
+                         std::vector<HexGrade>& trial) {
+  double least_before = std::numeric_limits<double>::infinity();
+  for (const Index h : hexes)
+    least_before = std::min(least_before, state.quality[static_cast<std::size_t>(h)]);
+  const double least_allowed = std::min(least_before, floor);
+  const Vec3 old_point = mesh.points[v];
+  mesh.points[v] = target;
+  trial.resize(hexes.size());
+  if (first >= hexes.size()) first = 0;
+  for (std::size_t k = 0; k < hexes.size(); ++k) {
+    const std::size_t i = k == 0 ? first : (k <= first ? k - 1 : k);
+    const auto h = static_cast<std::size_t>(hexes[i]);
+    trial[i] = hex_grade(hex_corners(mesh, static_cast<Index>(h)));
+    if (trial[i].scaled_jacobian < least_allowed ||
+        (state.valid[h] && !trial[i].corner_tets_positive)) {
+      mesh.points[v] = old_point;
+      first = i;
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < hexes.size(); ++i) {
+    const auto h = static_cast<std::size_t>(hexes[i]);
+    state.quality[h] = trial[i].scaled_jacobian;
+    state.valid[h] = trial[i].corner_tets_positive;
+  }
+  return true;
 }
 
 // Marks every node sharing a hex or a boundary quad with node v: the nodes whose moves are

@@ -7,49 +7,16 @@
 
 #include "feature_point.hpp"
 #include "hex_mesh_geometry.hpp"
-#include "volmesh/quality/hex_metrics.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 #include "volmesh/hexdc/smoothing.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
 
 namespace volmesh {
-namespace {
-
-using namespace hexdc_detail;
-
-// Whether moving node v to `target` keeps its hexes acceptable (see the header); the node is
-// left at `target` and `state` updated if so, the node restored otherwise. `trial` holds the
-// grades of the hexes judged so far.
-bool guarded_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v,
-                  const Vec3& target, double floor, HexState& state,
-                  std::vector<HexGrade>& trial) {
-  double least_before = std::numeric_limits<double>::infinity();
-  for (const Index h : hexes)
-    least_before = std::min(least_before, state.quality[static_cast<std::size_t>(h)]);
-  const double least_allowed = std::min(least_before, floor);
-  const Vec3 old_point = mesh.points[v];
-  mesh.points[v] = target;
-  trial.clear();
-  for (const Index h : hexes) {
-    trial.push_back(hex_grade(hex_corners(mesh, h)));
-    if (trial.back().scaled_jacobian < least_allowed ||
-        (state.valid[static_cast<std::size_t>(h)] && !trial.back().corner_tets_positive)) {
-      mesh.points[v] = old_point;
-      return false;
-    }
-  }
-  for (std::size_t i = 0; i < hexes.size(); ++i) {
-    const auto h = static_cast<std::size_t>(hexes[i]);
-    state.quality[h] = trial[i].scaled_jacobian;
-    state.valid[h] = trial[i].corner_tets_positive;
-  }
-  return true;
-}
-
-}  // namespace
 
 ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_point,
                               const ProjectOptions& options) {
+  using namespace hexdc_detail;
   if (options.halvings < 0 || options.passes < 1)
     throw InputError("project_boundary: halvings must not be negative, passes at least 1");
   const double cos_feature = feature_cosine("project_boundary", options.feature_angle_deg);
@@ -87,13 +54,14 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
   stats.invalid_hexes_before = invalid_count(state);
   SmoothingOptions smoothing;
   smoothing.feature_angle_deg = options.feature_angle_deg;
+  std::vector<std::size_t> first_judged(mesh.points.size(), 0);  // guarded_move's `first`
   std::vector<HexGrade> trial;
   const auto move = [&](std::size_t v, const Vec3& target) {
     Vec3 step = target - mesh.points[v];
     if (step.norm() <= on_surface) return;
     for (int k = 0; k <= options.halvings; ++k, step *= 0.5)
       if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, options.min_scaled_jacobian,
-                       state, trial))
+                       state, first_judged[v], trial))
         return;
   };
   for (int pass = 0; pass < options.passes; ++pass) {

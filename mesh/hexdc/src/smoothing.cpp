@@ -18,6 +18,8 @@ using namespace hexdc_detail;
 // A step shorter than this fraction of an edge at the node counts as no move:
 // a converged node would otherwise be "moved" by round-off in every sweep.
 constexpr double kNegligibleStep = 1e-12;
+// No hex may get worse than the node's worst: guarded_move's floor is never the bound.
+constexpr double kNoFloor = std::numeric_limits<double>::infinity();
 
 struct NodeLinks {
   std::vector<std::vector<Index>> hexes;       // hexes having the node as a corner
@@ -69,32 +71,6 @@ Vec3 laplacian_step(const HexMesh& mesh, const NodeLinks& links, std::size_t v) 
   return step - step.dot(normal) * normal;
 }
 
-// Moves node v to `target` if none of its hexes gets worse (see the header), updating `state`;
-// otherwise restores it. `trial` holds the grades of the hexes judged so far.
-bool try_move(HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v, const Vec3& target,
-              HexState& state, std::vector<HexGrade>& trial) {
-  double old_min = std::numeric_limits<double>::infinity();
-  for (const Index h : hexes)
-    old_min = std::min(old_min, state.quality[static_cast<std::size_t>(h)]);
-  const Vec3 old_point = mesh.points[v];
-  mesh.points[v] = target;
-  trial.clear();
-  for (const Index h : hexes) {
-    trial.push_back(hex_grade(hex_corners(mesh, h)));
-    const bool was_valid = state.valid[static_cast<std::size_t>(h)];
-    if (trial.back().scaled_jacobian < old_min || (was_valid && !trial.back().corner_tets_positive)) {
-      mesh.points[v] = old_point;
-      return false;
-    }
-  }
-  for (std::size_t i = 0; i < hexes.size(); ++i) {
-    const auto h = static_cast<std::size_t>(hexes[i]);
-    state.quality[h] = trial[i].scaled_jacobian;
-    state.valid[h] = trial[i].corner_tets_positive;
-  }
-  return true;
-}
-
 }  // namespace
 
 SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
@@ -117,6 +93,7 @@ SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
   // find none again. Its last outcome is counted again for it, as if it had been visited.
   std::vector<char> changed(mesh.points.size(), 1);
   std::vector<char> rejected(mesh.points.size(), 0);  // else its step was negligible
+  std::vector<std::size_t> first_judged(mesh.points.size(), 0);  // guarded_move's `first`
   std::vector<HexGrade> trial;
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     Index moved = 0;
@@ -137,7 +114,8 @@ SmoothingStats smooth_hexes(HexMesh& mesh, const SmoothingOptions& options) {
       }
       bool accepted = false;
       for (int k = 0; k <= options.halvings && !accepted; ++k, step *= 0.5)
-        accepted = try_move(mesh, links.hexes[v], v, mesh.points[v] + step, state, trial);
+        accepted = guarded_move(mesh, links.hexes[v], v, mesh.points[v] + step, kNoFloor, state,
+                                first_judged[v], trial);
       rejected[v] = accepted ? 0 : 1;
       if (accepted) mark_around(mesh, links.hexes[v], links.quads[v], changed);
       ++(accepted ? stats.moves_accepted : stats.moves_rejected);
