@@ -24,7 +24,8 @@ std::vector<std::array<Index, 3>> some_samples(Index dim) {
 TEST(MeshersHexdcField, SurfaceDomainSamplesTheExactSignedDistance) {
   const TriSurface sphere = test::icosphere(2);
   const SurfaceDomain domain({LabelledSurface{sphere}});
-  const VoxelGrid field = meshers::hexdc_field(domain, kDepth, meshers::hexdc_margin(kLevel));
+  const VoxelGrid field = meshers::hexdc_field(domain, kDepth, meshers::hexdc_margin(kLevel),
+                                               meshers::outer_surface_distance(domain).get());
   const SignedDistance exact(sphere, "sphere");
   const Index dim = field.dims[0];
   for (const auto& [i, j, k] : some_samples(dim)) {
@@ -45,7 +46,8 @@ TEST(MeshersHexdcField, NestedSurfacesTakeTheOutermostOnesDistance) {
   TriSurface outer = test::unit_cube();
   const SurfaceDomain domain({LabelledSurface{inner}, LabelledSurface{outer}});
   EXPECT_EQ(domain.surface(1).num_triangles(), outer.num_triangles());
-  const VoxelGrid field = meshers::hexdc_field(domain, kDepth, meshers::hexdc_margin(kLevel));
+  const VoxelGrid field = meshers::hexdc_field(domain, kDepth, meshers::hexdc_margin(kLevel),
+                                               meshers::outer_surface_distance(domain).get());
   const SignedDistance exact(outer, "outer");
   for (const auto& [i, j, k] : some_samples(field.dims[0])) {
     const Vec3 p = field.point(i, j, k);

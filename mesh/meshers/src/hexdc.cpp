@@ -4,6 +4,7 @@
 // its boundary projected onto the domain's surface (project.hpp) and its worst hexes optimised
 // again with the boundary nodes sliding on that surface (untangle.hpp).
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -96,7 +97,8 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
 
   progress("signed distances", 0.0);
   const Clock::time_point sampling = Clock::now();
-  const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level));
+  const std::shared_ptr<const SignedDistance> outer = outer_surface_distance(domain);
+  const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level), outer.get());
   const double field_seconds = seconds_since(sampling);
   if (std::none_of(field.values.begin(), field.values.end(), [](float v) { return v >= 0.0F; }))
     throw InputError(request.domain_name +
@@ -131,7 +133,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   // nodes onto their features.
   progress("projection", 0.65);
   const Clock::time_point projecting = Clock::now();
-  const SurfaceProjector surface = hexdc_surface(domain);
+  const SurfaceProjector surface = hexdc_surface(domain, outer);
   const ProjectStats projection = project_boundary(hexes, surface);
   progress("untangling on the surface", 0.85);
   // Projection fixes the buffer hexes' outer quads where it put them: the worst hexes are

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <oneapi/tbb/parallel_for.h>
@@ -131,21 +132,26 @@ double hexdc_margin(int level) {
   return (1.0 + kMarginSlack) / static_cast<double>((std::int64_t{1} << level) - 2);
 }
 
-VoxelGrid hexdc_field(const Domain& domain, int depth, double margin) {
+std::shared_ptr<const SignedDistance> outer_surface_distance(const Domain& domain) {
+  const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain);
+  const Index outer = surfaces != nullptr ? outermost_surface(*surfaces) : kNoIndex;
+  if (outer == kNoIndex) return nullptr;
+  return std::make_shared<const SignedDistance>(surfaces->surface(outer), "surface");
+}
+
+VoxelGrid hexdc_field(const Domain& domain, int depth, double margin,
+                      const SignedDistance* outer) {
   const Index dim = (Index{1} << depth) + 1;
   const auto* sdf = dynamic_cast<const SdfGridDomain*>(&domain);
   if (sdf != nullptr && sdf->grid().dims == std::array<Index, 3>{dim, dim, dim})
     return sdf->grid();
   VoxelGrid grid = sdf_layout(domain.bounds(), dim, margin);
   grid.values.resize(static_cast<std::size_t>(dim) * dim * dim);
-  const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain);
-  const Index outer = surfaces != nullptr ? outermost_surface(*surfaces) : kNoIndex;
   const auto* analytic = dynamic_cast<const AnalyticDomain*>(&domain);
   if (sdf != nullptr)
     resample(*sdf, grid);
-  else if (outer != kNoIndex)
-    SignedDistance(surfaces->surface(outer), "surface")
-        .sample_band(grid, kExactBandSpacings * grid.spacing.maxCoeff());  // positive inside
+  else if (outer != nullptr)
+    outer->sample_band(grid, kExactBandSpacings * grid.spacing.maxCoeff());  // positive inside
   else if (analytic != nullptr && analytic->primitives().size() == 1)
     sample_primitive(*analytic, grid);
   else

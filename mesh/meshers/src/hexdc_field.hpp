@@ -1,7 +1,10 @@
 #pragma once
 // The signed-distance voxels (positive inside) the hexdc mesher contours, from any Domain.
+#include <memory>
+
 #include "volmesh/core/voxel_grid.hpp"
 #include "volmesh/domain/domain.hpp"
+#include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/domain/surface.hpp"
 
 namespace volmesh::meshers {
@@ -28,6 +31,13 @@ double hexdc_margin(int level);
 // exactly region != 0, nested surfaces being interfaces.
 Index outermost_surface(const SurfaceDomain& domain);
 
-VoxelGrid hexdc_field(const Domain& domain, int depth, double margin);
+// The signed distance of a surface domain's one outermost surface, null for any other domain:
+// built once, for the field (hexdc_field) and for the projection onto the surface
+// (hexdc_surface.hpp), as its tree is the costly part. Throws InputError as SignedDistance does.
+std::shared_ptr<const SignedDistance> outer_surface_distance(const Domain& domain);
+
+// `outer` is outer_surface_distance(domain).
+VoxelGrid hexdc_field(const Domain& domain, int depth, double margin,
+                      const SignedDistance* outer);
 
 }  // namespace volmesh::meshers
