@@ -72,7 +72,7 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   in.domain_name = domain_display_name(spec);
   meshers::MeshRequest request;
   request.domain_name = in.domain_name;
-  request.level = opt.level;
+  if (opt.level >= 0) request.level = opt.level;
   request.uniform = true;
   request.options = opt.given;
   request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
@@ -163,7 +163,8 @@ int run_solve(const SolveOptions& opt) {
                        {"solve", report.solve_seconds},
                        {"write", write_seconds},
                        {"total", seconds_since(start)}}}};
-    if (!opt.method.empty()) j["method"] = opt.method, j["level"] = opt.level, j["h"] = in.h;
+    if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
+    if (opt.level >= 0) j["level"] = opt.level;
     if (!warning.empty()) j["warning"] = warning;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -230,7 +231,6 @@ Command add_solve_command(CLI::App& root) {
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);
-  method->needs(level);
   level->needs(method);
   app->footer(
       "Examples:\n"
