@@ -1,6 +1,7 @@
 // tet-projection: the exact projection mesher (mesh/tet, projection.hpp) on a domain's
 // triangulated surfaces, rounded back to doubles with every tet checked (rounding.hpp).
 #include <string>
+#include <vector>
 
 #include "registration.hpp"
 #include "volmesh/core/convert.hpp"
@@ -75,7 +76,8 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
           {"enclosed_volume", {{"exact", s.enclosed_volume.get_str()},
                                {"value", s.enclosed_volume.get_d()}}},
           {"rounding", {{"moved_points", rounding.moved_points},
-                        {"repaired_prisms", rounding.repaired_prisms}}},
+                        {"repaired_prisms", rounding.repaired_prisms},
+                        {"axes_tried", rounding.axes_tried}}},
           {"stage_seconds", stages}};
 }
 
@@ -85,13 +87,32 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   const std::vector<tet::ProjectionSurface> surfaces = surfaces_of(domain, request.domain_name);
   require_no_intersections(surfaces, request.domain_name);
   const double check_seconds = seconds_since(clock);
-  const tet::ProjectionMesh exact = tet::tetrahedralize_by_projection(
-      surfaces, projection_options(request.options), part_of(request.progress, 0.05, 0.9));
-  clock = Clock::now();
-  report(request.progress, "rounding to doubles", 0.9);
+  // A prism too thin for doubles along one axis is not along another: with the axis left to
+  // the method, a mesh that rounding cannot keep positive is made again along the next axis.
+  const tet::ProjectionOptions asked = projection_options(request.options);
+  std::vector<tet::ProjectionOptions> attempts{asked};
+  tet::ProjectionMesh exact;
   tet::Rounding rounding;
-  const TetMesh tets = tet::round_to_doubles(exact, surfaces, rounding);
-  const double round_seconds = seconds_since(clock);
+  TetMesh tets;
+  double round_seconds = 0.0;
+  for (std::size_t attempt = 0; attempt < attempts.size(); ++attempt) {
+    exact = tet::tetrahedralize_by_projection(surfaces, attempts[attempt],
+                                              part_of(request.progress, 0.05, 0.9));
+    if (attempt == 0 && asked.auto_axis)
+      for (const tet::Axis a : {tet::Axis::z, tet::Axis::x, tet::Axis::y})
+        if (a != exact.stats.axis) attempts.push_back({.auto_axis = false, .axis = a});
+    clock = Clock::now();
+    report(request.progress, "rounding to doubles", 0.9);
+    rounding = {};
+    try {
+      tets = tet::round_to_doubles(exact, surfaces, rounding);
+      round_seconds = seconds_since(clock);
+      rounding.axes_tried = static_cast<Index>(attempt + 1);
+      break;
+    } catch (const InputError&) {
+      if (attempt + 1 == attempts.size()) throw;
+    }
+  }
   MeshResult r;
   r.mesh = to_poly_mesh(tets);
   const Box3 box = domain.bounds();

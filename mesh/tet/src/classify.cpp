@@ -60,7 +60,8 @@ void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, Surface
     const Index first = static_cast<Index>(out.points.size());
     for (const Vec3& p : surface.points) {
       const Vec3 q = to_frame(p, axis);
-      out.points.emplace_back(q.x(), q.y(), q.z());
+      out.points.push_back({q.x(), q.y(), q.z()});
+      out.projected.emplace_back(q.x(), q.y());
     }
     for (const auto& t : surface.triangles) {
       const Vec3 a = to_frame(surface.points[t[0]], axis);
@@ -75,17 +76,21 @@ void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, Surface
   out.plane.resize(out.triangles.size());
   for (std::size_t t = 0; t < out.triangles.size(); ++t) {
     if (out.facing[t] == Facing::wall) continue;
-    const Point3& a = out.points[out.triangles[t][0]];
-    const K::Vector_3 n = CGAL::cross_product(out.points[out.triangles[t][1]] - a,
-                                              out.points[out.triangles[t][2]] - a);
-    const FT ca = -n.x() / n.z(), cb = -n.y() / n.z();
-    out.plane[t] = {ca, cb, a.z() - ca * a.x() - cb * a.y()};
+    const RationalPoint& a = out.points[out.triangles[t][0]];
+    const RationalPoint& b = out.points[out.triangles[t][1]];
+    const RationalPoint& c = out.points[out.triangles[t][2]];
+    const Rational ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+    const Rational vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const Rational nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    Rational ca = -nx / nz, cb = -ny / nz;
+    Rational cc = a.z - ca * a.x - cb * a.y;
+    out.plane[t] = {std::move(ca), std::move(cb), std::move(cc)};
   }
 }
 
-FT height_at(const Surfaces& input, Index t, const Point2& p) {
+Rational height_at(const Surfaces& input, Index t, const Rational& x, const Rational& y) {
   const auto& c = input.plane[t];
-  return c[0] * p.x() + c[1] * p.y() + c[2];
+  return c[0] * x + c[1] * y + c[2];
 }
 
 }  // namespace volmesh::tet::detail

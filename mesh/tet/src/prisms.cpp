@@ -15,19 +15,17 @@ namespace {
 Rectangle rectangle_of(const Surfaces& in, Index t) {
   Rectangle r{INFINITY, INFINITY, -INFINITY, -INFINITY};
   for (const Index p : in.triangles[t]) {
-    const double x = CGAL::to_double(in.points[p].x()), y = CGAL::to_double(in.points[p].y());
+    const double x = in.points[p].x.get_d(), y = in.points[p].y.get_d();
     r = {std::min(r[0], x), std::min(r[1], y), std::max(r[2], x), std::max(r[3], y)};
   }
   return r;
 }
 
-Point2 projected(const Surfaces& in, Index p) { return {in.points[p].x(), in.points[p].y()}; }
-
 bool covers(const Surfaces& in, Index t, const Point2& q) {
   const auto& c = in.triangles[t];
   const CGAL::Orientation inside = in.facing[t] == Facing::top ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
   for (int k = 0; k < 3; ++k)
-    if (CGAL::orientation(projected(in, c[k]), projected(in, c[(k + 1) % 3]), q) != inside)
+    if (CGAL::orientation(in.projected[c[k]], in.projected[c[(k + 1) % 3]], q) != inside)
       return false;
   return true;
 }
@@ -54,16 +52,23 @@ void build_prisms(State& state) {
   const PlaneCache cache(rectangles);
   state.stack.assign(state.faces.size(), {});
   state.face_prisms.assign(state.faces.size() + 1, 0);
-  std::vector<std::pair<FT, Index>> over;
+  std::vector<std::pair<Rational, Index>> over;
   std::vector<Index> entered;
   for (std::size_t f = 0; f < state.faces.size(); ++f) {
     const FaceHandle face = state.faces[f];
     const Point2 q = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(),
                                     face->vertex(2)->point());
+    Rational x = 0, y = 0;
+    for (int k = 0; k < 3; ++k) {
+      x += state.xy[face->vertex(k)->info()][0];
+      y += state.xy[face->vertex(k)->info()][1];
+    }
+    x /= 3;
+    y /= 3;
     over.clear();
-    for (const Index item : cache.near(CGAL::to_double(q.x()), CGAL::to_double(q.y()))) {
+    for (const Index item : cache.near(x.get_d(), y.get_d())) {
       const Index t = sloped[item];
-      if (covers(in, t, q)) over.emplace_back(height_at(in, t, q), t);
+      if (covers(in, t, q)) over.emplace_back(height_at(in, t, x, y), t);
     }
     std::sort(over.begin(), over.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });

@@ -13,8 +13,8 @@ void project(State& state) {
   std::vector<VertexHandle> handle(in.points.size());
   VertexHandle hint;
   for (std::size_t i = 0; i < in.points.size(); ++i) {
-    const Point2 p(in.points[i].x(), in.points[i].y());
-    hint = state.plane.insert(p, hint == VertexHandle() ? Plane2::Face_handle() : hint->face());
+    hint = state.plane.insert(in.projected[i],
+                              hint == VertexHandle() ? Plane2::Face_handle() : hint->face());
     handle[i] = hint;
   }
   std::vector<std::pair<Index, Index>> edges;
@@ -32,6 +32,7 @@ void project(State& state) {
   for (auto v = state.plane.finite_vertices_begin(); v != state.plane.finite_vertices_end(); ++v) {
     v->info() = id++;
     state.vertices.push_back(v);
+    state.xy.push_back({Rational(CGAL::exact(v->point().x())), Rational(CGAL::exact(v->point().y()))});
   }
   state.at_vertex.assign(state.vertices.size(), {});
   for (std::size_t i = 0; i < in.points.size(); ++i)

@@ -9,17 +9,13 @@ namespace volmesh::tet {
 
 namespace {
 
-mpq_class rational(const detail::FT& v) { return mpq_class(CGAL::exact(v)); }
-
 // Back from the projection frame (classify.cpp's cyclic permutation).
-RationalPoint from_frame(const detail::Point3& p, Axis axis) {
-  mpq_class x = rational(p.x()), y = rational(p.y()), z = rational(p.z());
+void from_frame(RationalPoint& p, Axis axis) {
   switch (axis) {
-    case Axis::x: return {z, x, y};
-    case Axis::y: return {y, z, x};
+    case Axis::x: p = {p.z, p.x, p.y}; break;
+    case Axis::y: p = {p.y, p.z, p.x}; break;
     case Axis::z: break;
   }
-  return {x, y, z};
 }
 
 mpq_class enclosed_volume(const std::vector<ProjectionSurface>& surfaces) {
@@ -76,11 +72,10 @@ ProjectionMesh tetrahedralize_by_projection(const std::vector<ProjectionSurface>
   stage("stitch", 0.8);
   const Index boundary_points = static_cast<Index>(state.points.size());
   detail::fill(state, mesh);
-  stage("fill", 0.95);
+  stage("fill", 1.0);
 
-  mesh.points.reserve(state.points.size());
-  for (const detail::Point3& p : state.points) mesh.points.push_back(from_frame(p, stats.axis));
-  stage("exact", 1.0);
+  mesh.points = std::move(state.points);
+  for (RationalPoint& p : mesh.points) from_frame(p, stats.axis);
 
   const detail::Surfaces& in = state.input;
   stats.triangles = static_cast<Index>(in.triangles.size());

@@ -14,10 +14,12 @@
 
 namespace volmesh::tet::detail {
 
+// The plane triangulation's kernel: filtered exact predicates and exact intersections.
 using K = CGAL::Epeck;
-using FT = K::FT;
 using Point2 = K::Point_2;
-using Point3 = K::Point_3;
+// Heights and points in plain GMP rationals: they are compared for equality all the time
+// (surfaces meet along edges), which a lazy number only settles by evaluating exactly.
+using Rational = mpq_class;
 
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<Index, K>;
 using FaceBase =
@@ -33,13 +35,14 @@ enum class Facing { top, bot, wall };
 
 // The input, in the projection frame (the axis is z).
 struct Surfaces {
-  std::vector<Point3> points;
+  std::vector<RationalPoint> points;
+  std::vector<Point2> projected;  // per point
   std::vector<std::array<Index, 3>> triangles;
   std::vector<Index> surface;  // per triangle
   std::vector<Index> label;    // per surface
   std::vector<Facing> facing;  // per triangle
   // Per non-WALL triangle, z = a x + b y + c over its plane.
-  std::vector<std::array<FT, 3>> plane;
+  std::vector<std::array<Rational, 3>> plane;
 };
 
 // A gap between two consecutive surface triangles over a plane triangle, inside region
@@ -52,7 +55,7 @@ struct Prism {
 
 // A point on a vertical line over a plane vertex: its height and its mesh point.
 struct Height {
-  FT z;
+  Rational z;
   Index point = kNoIndex;
 };
 
@@ -67,6 +70,7 @@ struct State {
   Surfaces input;
   Plane2 plane;
   std::vector<VertexHandle> vertices;        // by vertex info
+  std::vector<std::array<Rational, 2>> xy;   // per vertex, exact
   std::vector<std::vector<Index>> at_vertex;  // input points projecting onto each vertex
   std::vector<FaceHandle> faces;             // the finite faces, by face info
   std::vector<std::vector<Index>> stack;     // per face: the triangles over it, upwards
@@ -74,7 +78,7 @@ struct State {
   std::vector<Index> face_prisms;            // face f's: [face_prisms[f], face_prisms[f + 1])
   std::vector<Index> walls;                  // the WALL triangles
   std::vector<std::vector<Height>> heights;  // per vertex, increasing, distinct
-  std::vector<Point3> points;                // the mesh's
+  std::vector<RationalPoint> points;         // the mesh's
   std::vector<std::vector<BoundaryTriangle>> prism_boundary;
 };
 
@@ -87,8 +91,8 @@ void stitch(State& state);
 void fill(State& state, ProjectionMesh& mesh);
 
 // Height of non-WALL triangle t over plane vertex v (the corner's own z when v is a corner).
-FT height_at(const State& state, Index t, Index v);
-// z of triangle t's plane at p.
-FT height_at(const Surfaces& input, Index t, const Point2& p);
+Rational height_at(const State& state, Index t, Index v);
+// z of triangle t's plane over (x, y).
+Rational height_at(const Surfaces& input, Index t, const Rational& x, const Rational& y);
 
 }  // namespace volmesh::tet::detail

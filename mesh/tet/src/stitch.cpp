@@ -15,26 +15,25 @@ namespace volmesh::tet::detail {
 
 namespace {
 
-Point2 projected(const Surfaces& in, Index p) { return {in.points[p].x(), in.points[p].y()}; }
-
-// Height over q (on its projection) of the edge p -> r, which is not vertical.
-FT edge_height(const Surfaces& in, Index p, Index r, const Point2& q) {
-  const Point2 p2 = projected(in, p), r2 = projected(in, r);
-  const K::Vector_2 d = r2 - p2;
-  const FT zp = in.points[p].z(), zr = in.points[r].z();
-  return zp + (zr - zp) * ((q - p2) * d) / (d * d);
+// Height over (x, y), on its projection, of the edge p -> r, which is not vertical.
+Rational edge_height(const Surfaces& in, Index p, Index r, const std::array<Rational, 2>& q) {
+  const RationalPoint &a = in.points[p], &b = in.points[r];
+  const Rational dx = b.x - a.x, dy = b.y - a.y;
+  return a.z + (b.z - a.z) * ((q[0] - a.x) * dx + (q[1] - a.y) * dy) / (dx * dx + dy * dy);
 }
 
-// Heights of WALL triangle w over a point q of its projection: where its edges pass over q.
-void wall_heights(const Surfaces& in, Index w, const Point2& q, std::vector<FT>& out) {
+// Heights of WALL triangle w over plane vertex q (at xy) of its projection: where its edges
+// pass over q.
+void wall_heights(const Surfaces& in, Index w, const Point2& q, const std::array<Rational, 2>& xy,
+                  std::vector<Rational>& out) {
   const auto& c = in.triangles[w];
   for (int k = 0; k < 3; ++k) {
     const Index p = c[k], r = c[(k + 1) % 3];
-    const Point2 p2 = projected(in, p), r2 = projected(in, r);
+    const Point2 &p2 = in.projected[p], &r2 = in.projected[r];
     if (p2 == r2) {
-      if (p2 == q) out.push_back(in.points[p].z());
+      if (p2 == q) out.push_back(in.points[p].z);
     } else if (K::Segment_2(p2, r2).has_on(q)) {
-      out.push_back(edge_height(in, p, r, q));
+      out.push_back(edge_height(in, p, r, xy));
     }
   }
 }
@@ -42,7 +41,7 @@ void wall_heights(const Surfaces& in, Index w, const Point2& q, std::vector<FT>&
 bool wall_contains(const Surfaces& in, Index w, const Point2& q) {
   const auto& c = in.triangles[w];
   for (int k = 0; k < 3; ++k) {
-    const Point2 p2 = projected(in, c[k]), r2 = projected(in, c[(k + 1) % 3]);
+    const Point2 &p2 = in.projected[c[k]], &r2 = in.projected[c[(k + 1) % 3]];
     if (p2 != r2 && K::Segment_2(p2, r2).has_on(q)) return true;
   }
   return false;
@@ -51,7 +50,7 @@ bool wall_contains(const Surfaces& in, Index w, const Point2& q) {
 // A surface line over a plane edge: its heights over the edge's lower- and higher-numbered
 // ends, and the triangles along it.
 struct Line {
-  FT lo, hi;
+  Rational lo, hi;
   std::vector<Index> owners;
   Index at_lo = 0, at_hi = 0;  // its heights' places in the ends' height lists
 };
@@ -62,9 +61,9 @@ struct Line {
                    std::to_string(CGAL::to_double(q.y())) + ") of the projection plane");
 }
 
-Index place_of(const std::vector<Height>& heights, const FT& z) {
+Index place_of(const std::vector<Height>& heights, const Rational& z) {
   const auto it = std::lower_bound(heights.begin(), heights.end(), z,
-                                   [](const Height& h, const FT& v) { return h.z < v; });
+                                   [](const Height& h, const Rational& v) { return h.z < v; });
   return static_cast<Index>(it - heights.begin());
 }
 
@@ -92,8 +91,7 @@ class Stitcher {
       s_.walls.push_back(t);
       Rectangle box{INFINITY, INFINITY, -INFINITY, -INFINITY};
       for (const Index p : in_.triangles[t]) {
-        const double x = CGAL::to_double(in_.points[p].x());
-        const double y = CGAL::to_double(in_.points[p].y());
+        const double x = in_.points[p].x.get_d(), y = in_.points[p].y.get_d();
         box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
       }
       r.push_back(box);
@@ -102,15 +100,15 @@ class Stitcher {
   }
 
   template <class Visit>
-  void walls_over(const Point2& q, Visit visit) const {
-    for (const Index item : walls_.near(CGAL::to_double(q.x()), CGAL::to_double(q.y())))
+  void walls_over(const Point2& q, const std::array<Rational, 2>& xy, Visit visit) const {
+    for (const Index item : walls_.near(xy[0].get_d(), xy[1].get_d()))
       if (wall_contains(in_, s_.walls[item], q)) visit(s_.walls[item]);
   }
 
   void collect_heights() {
     s_.points = in_.points;
     s_.heights.assign(s_.vertices.size(), {});
-    std::vector<FT> z;
+    std::vector<Rational> z;
     for (std::size_t v = 0; v < s_.vertices.size(); ++v) {
       const VertexHandle vh = s_.vertices[v];
       z.clear();
@@ -119,18 +117,19 @@ class Stitcher {
         if (!s_.plane.is_infinite(f))
           for (const Index t : s_.stack[f->info()]) z.push_back(height_at(s_, t, vh->info()));
       } while (++f != end);
-      walls_over(vh->point(), [&](Index w) { wall_heights(in_, w, vh->point(), z); });
-      for (const Index p : s_.at_vertex[v]) z.push_back(in_.points[p].z());
+      walls_over(vh->point(), s_.xy[v],
+                 [&](Index w) { wall_heights(in_, w, vh->point(), s_.xy[v], z); });
+      for (const Index p : s_.at_vertex[v]) z.push_back(in_.points[p].z);
       std::sort(z.begin(), z.end());
       z.erase(std::unique(z.begin(), z.end()), z.end());
       std::vector<Height>& heights = s_.heights[v];
-      for (const FT& h : z) {
+      for (const Rational& h : z) {
         Index point = kNoIndex;
         for (const Index p : s_.at_vertex[v])
-          if (in_.points[p].z() == h) point = p;
+          if (in_.points[p].z == h) point = p;
         if (point == kNoIndex) {
           point = static_cast<Index>(s_.points.size());
-          s_.points.emplace_back(vh->point().x(), vh->point().y(), h);
+          s_.points.push_back({s_.xy[v][0], s_.xy[v][1], h});
         }
         heights.push_back({h, point});
       }
@@ -166,16 +165,19 @@ class Stitcher {
     for (const Index t : sloped) lines.push_back({height_at(s_, t, lo), height_at(s_, t, hi), {t}});
     const Point2& a = s_.vertices[lo]->point();
     const Point2& b = s_.vertices[hi]->point();
-    walls_over(CGAL::midpoint(a, b), [&](Index w) {
+    const std::array<Rational, 2> middle{(s_.xy[lo][0] + s_.xy[hi][0]) / 2,
+                                         (s_.xy[lo][1] + s_.xy[hi][1]) / 2};
+    walls_over(CGAL::midpoint(a, b), middle, [&](Index w) {
       // The wall's two edges that span the plane edge bound it below and above.
       const auto& c = in_.triangles[w];
       for (int k = 0; k < 3; ++k) {
         const Index p = c[k], r = c[(k + 1) % 3];
-        const Point2 p2 = projected(in_, p), r2 = projected(in_, r);
+        const Point2 &p2 = in_.projected[p], &r2 = in_.projected[r];
         if (p2 == r2) continue;
         const K::Segment_2 edge(p2, r2);
         if (!edge.has_on(a) || !edge.has_on(b)) continue;
-        lines.push_back({edge_height(in_, p, r, a), edge_height(in_, p, r, b), {w}});
+        lines.push_back(
+            {edge_height(in_, p, r, s_.xy[lo]), edge_height(in_, p, r, s_.xy[hi]), {w}});
       }
     });
     std::sort(lines.begin(), lines.end(),
@@ -264,11 +266,11 @@ class Stitcher {
 
 }  // namespace
 
-FT height_at(const State& state, Index t, Index v) {
+Rational height_at(const State& state, Index t, Index v) {
   for (const Index corner : state.input.triangles[t])
     for (const Index p : state.at_vertex[v])
-      if (p == corner) return state.input.points[p].z();
-  return height_at(state.input, t, state.vertices[v]->point());
+      if (p == corner) return state.input.points[p].z;
+  return height_at(state.input, t, state.xy[v][0], state.xy[v][1]);
 }
 
 void stitch(State& state) { Stitcher(state).run(); }
