@@ -214,5 +214,36 @@ TEST(BuiltinSurfaces, TwistedPrismsAreSurfaceDomains) {
   EXPECT_EQ(d->bounds().hi.z(), 1.0);
 }
 
+// Grid lines all but parallel to a side triangle (the prism's bottom edge b4 b5 runs along x
+// up to the rounding of sin): their crossing parameters are exact, never 0 / 0.
+TEST(BuiltinSurfaces, CrossingsOfSegmentsAllButParallelToAFaceAreFinite) {
+  struct Case {
+    const char* name;
+    Vec3 a, b;
+  };
+  const Case cases[] = {
+      {"twisted-prism:6:110", Vec3(-0x1.0f4fac02e622dp-2, -0x1.ecccccccccccep-2, 0x1.e2d5b1cac3e7cp-3),
+       Vec3(-0x1.91d28b38ff78ap-3, -0x1.ecccccccccccep-2, 0x1.e2d5b1cac3e7cp-3)},
+      {"twisted-prism:6:60", Vec3(0x1.bbf6a67a9694cp-3, -0x1.a66666666666bp-2, 0x1.0c20933690906p-1),
+       Vec3(0x1.6ac8200a18176p-2, -0x1.a66666666666bp-2, 0x1.0c20933690906p-1)},
+      {"twisted-prism:5:100", Vec3(-0x1.15bd05cb8d977p-1, 0x1.97e20b0e58a82p-2, 0x1.65309111f20e4p-3),
+       Vec3(-0x1.15bd05cb8d977p-1, 0x1.51d356edd66b6p-2, 0x1.65309111f20e4p-3)},
+  };
+  for (const Case& c : cases) {
+    const auto d = make_builtin_domain(c.name);
+    const std::vector<Crossing> crossings = d->crossings(c.a, c.b);
+    ASSERT_FALSE(crossings.empty()) << c.name;
+    Index region = d->region(c.a);
+    double t = 0.0;
+    for (const Crossing& x : crossings) {
+      EXPECT_TRUE(x.t >= t && x.t <= 1.0) << c.name << ": t = " << x.t;
+      EXPECT_EQ(x.before, region) << c.name;
+      region = x.after;
+      t = x.t;
+    }
+    EXPECT_EQ(region, d->region(c.b)) << c.name;
+  }
+}
+
 }  // namespace
 }  // namespace volmesh
