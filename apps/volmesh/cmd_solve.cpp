@@ -238,10 +238,14 @@ Command add_solve_command(CLI::App& root) {
       "--level 4 -o ball.vtu\n"
       "  volmesh solve poisson --mesh part.vtu --exact \"sin(x)*exp(y*z)\" -o u.vtu --json\n"
       "  volmesh solve elasticity --problem elastic-patch --method grid --level 3 -o patch.vtu");
-  app->callback([app, mesh, method] {
+  app->callback([app, mesh, method, level, opt] {
     if (mesh->count() == 0 && method->count() == 0)
       throw CLI::ValidationError("--mesh or --method", "give a mesh (--mesh M) or a method "
                                                        "(--method X --domain D --level N)");
+    // A surface method meshes the surface as given; every other one needs its resolution.
+    if (method->count() > 0 && level->count() == 0 &&
+        meshers::find_mesher(opt->method).resolution == meshers::Resolution::level)
+      throw CLI::ValidationError("--method " + opt->method, "needs --level");
   });
   return {app, [opt] { return run_solve(*opt); }};
 }

@@ -32,7 +32,7 @@ TEST(CliTetProjection, MeshesACubeExactlyAndReportsItsFigures) {
   EXPECT_EQ(j["top"].get<Index>() + j["bot"].get<Index>() + j["wall"].get<Index>(), 12);
   EXPECT_EQ(j["enclosed_volume"]["exact"], "1/8");
   EXPECT_EQ(j["rounding"]["repaired_prisms"], 0);
-  EXPECT_EQ(j["rounding"]["axes_tried"], 1);
+  EXPECT_EQ(j["rounding"]["directions_tried"], 1);
   EXPECT_EQ(j["steiner_points"]["interior"], j["prisms"]);
   EXPECT_EQ(j["tets"], j["cells"]);
   for (const char* stage : {"check", "classify", "project", "prisms", "stitch", "fill", "round"})

@@ -6,6 +6,8 @@
 
 #include "exact_checks.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/domain/builtin.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh::tet {
 namespace {
@@ -85,6 +87,15 @@ ProjectionMesh mesh_of(const std::vector<ProjectionSurface>& surfaces, Projectio
   return m;
 }
 
+// The builtins made of triangles, as the mesher takes them from a surface domain.
+std::vector<ProjectionSurface> builtin(const std::string& name) {
+  const SurfaceDomain domain(builtin_surfaces(name));
+  std::vector<ProjectionSurface> out;
+  for (Index s = 0; s < static_cast<Index>(domain.labels().size()); ++s)
+    out.push_back({domain.surface(s), domain.labels()[s], domain.depths()[s] == 0});
+  return out;
+}
+
 TEST(Projection, BoxAlongEachAxis) {
   const std::vector<ProjectionSurface> box{{box_surface(Vec3(0, 0, 0), Vec3(1, 2, 3))}};
   for (const Axis a : {Axis::x, Axis::y, Axis::z}) {
@@ -93,6 +104,21 @@ TEST(Projection, BoxAlongEachAxis) {
     EXPECT_EQ(m.stats.wall, 8);
     EXPECT_EQ(m.stats.top, 2);
   }
+}
+
+TEST(Projection, TiltedDirections) {
+  const std::vector<ProjectionSurface> box{{box_surface(Vec3(0, 0, 0), Vec3(1, 2, 3))}};
+  for (int tilt = 1; tilt <= kTilts; ++tilt) {
+    SCOPED_TRACE(tilt);
+    const ProjectionMesh m = mesh_of(box, {.auto_axis = false, .axis = Axis::y, .tilt = tilt});
+    EXPECT_EQ(m.stats.wall, 0);  // no face is parallel to a tilted direction
+  }
+  {
+    SCOPED_TRACE("sphere");
+    mesh_of({{sphere(2)}}, {.auto_axis = false, .axis = Axis::x, .tilt = 2});
+  }
+  SCOPED_TRACE("cube-inclusion");
+  mesh_of(builtin("cube-inclusion"), {.auto_axis = false, .axis = Axis::z, .tilt = 1});
 }
 
 TEST(Projection, SchoenhardtNeedsInteriorSteinerPoints) {
@@ -129,6 +155,20 @@ TEST(Projection, NestedSurfacesGiveTwoRegions) {
       inner += testing::six_volume(m.points[m.tets[t][0]], m.points[m.tets[t][1]],
                                    m.points[m.tets[t][2]], m.points[m.tets[t][3]]);
   EXPECT_TRUE(inner / 6 == mpq_class(9, 2));  // (4/3) 1.5^3
+}
+
+TEST(Projection, CubeInclusionGivesTwoRegions) {
+  const std::vector<ProjectionSurface> surfaces = builtin("cube-inclusion");
+  for (const Axis a : {Axis::z, Axis::x, Axis::y}) {
+    SCOPED_TRACE(axis_name(a));
+    const ProjectionMesh m = mesh_of(surfaces, {.auto_axis = false, .axis = a});
+    mpq_class inclusion = 0;
+    for (std::size_t t = 0; t < m.tets.size(); ++t)
+      if (m.tet_region[t] == 2)
+        inclusion += testing::six_volume(m.points[m.tets[t][0]], m.points[m.tets[t][1]],
+                                         m.points[m.tets[t][2]], m.points[m.tets[t][3]]);
+    EXPECT_NEAR(mpq_class(inclusion / 6).get_d(), 27.0, 1e-12);
+  }
 }
 
 TEST(Projection, InwardSurfaceIsRefused) {

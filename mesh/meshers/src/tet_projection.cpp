@@ -1,12 +1,15 @@
 // tet-projection: the exact projection mesher (mesh/tet, projection.hpp) on a domain's
 // triangulated surfaces, rounded back to doubles with every tet checked (rounding.hpp).
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "registration.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/geometry/self_intersections.hpp"
 #include "volmesh/tet/projection.hpp"
@@ -16,17 +19,24 @@ namespace volmesh::meshers {
 
 namespace {
 
-// The domain's surfaces, labelled as its regions. Only surface domains have them.
+constexpr std::string_view kBuiltin = "builtin:";
+
+// The domain's surfaces, labelled as its regions: a surface domain's, or the triangulation of
+// a builtin with a polyhedral boundary (builtin_surfaces).
 std::vector<tet::ProjectionSurface> surfaces_of(const Domain& domain, const std::string& name) {
-  const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain);
-  if (surfaces == nullptr)
+  const auto* given = dynamic_cast<const SurfaceDomain*>(&domain);
+  std::optional<SurfaceDomain> polyhedral;
+  if (given == nullptr && name.starts_with(kBuiltin)) {
+    std::vector<LabelledSurface> list = builtin_surfaces(name.substr(kBuiltin.size()));
+    if (!list.empty()) given = &polyhedral.emplace(std::move(list));
+  }
+  if (given == nullptr)
     throw InputError("tet-projection: " + name +
                      " is not given by triangulated surfaces; give a surface file (.stl .off "
                      ".obj .ply) or a builtin made of triangles");
   std::vector<tet::ProjectionSurface> out;
-  for (Index s = 0; s < static_cast<Index>(surfaces->labels().size()); ++s) {
-    tet::ProjectionSurface p{surfaces->surface(s), surfaces->labels()[s],
-                             surfaces->depths()[s] == 0};
+  for (Index s = 0; s < static_cast<Index>(given->labels().size()); ++s) {
+    tet::ProjectionSurface p{given->surface(s), given->labels()[s], given->depths()[s] == 0};
     p.name = domain.boundary_name(p.surface.points.front());
     if (p.name.empty()) p.name = "surface";
     out.push_back(std::move(p));
@@ -63,7 +73,7 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
   nlohmann::json stages = {{"check", check_seconds}};
   for (const auto& [stage, seconds] : s.seconds) stages[stage] = seconds;
   stages["round"] = round_seconds;
-  return {{"axis", tet::axis_name(s.axis)},
+  return {{"direction", tet::direction_name(s.axis, s.tilt)},
           {"surface_triangles", s.triangles},
           {"top", s.top},
           {"bot", s.bot},
@@ -77,7 +87,7 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
                                {"value", s.enclosed_volume.get_d()}}},
           {"rounding", {{"moved_points", rounding.moved_points},
                         {"repaired_prisms", rounding.repaired_prisms},
-                        {"axes_tried", rounding.axes_tried}}},
+                        {"directions_tried", rounding.directions_tried}}},
           {"stage_seconds", stages}};
 }
 
@@ -87,8 +97,9 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   const std::vector<tet::ProjectionSurface> surfaces = surfaces_of(domain, request.domain_name);
   require_no_intersections(surfaces, request.domain_name);
   const double check_seconds = seconds_since(clock);
-  // A prism too thin for doubles along one axis is not along another: with the axis left to
-  // the method, a mesh that rounding cannot keep positive is made again along the next axis.
+  // A prism too thin for doubles along one direction is not along another: with the axis
+  // left to the method, a mesh that rounding cannot keep positive is made again along the
+  // other axes, then along tilted directions.
   const tet::ProjectionOptions asked = projection_options(request.options);
   std::vector<tet::ProjectionOptions> attempts{asked};
   tet::ProjectionMesh exact;
@@ -98,16 +109,19 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   for (std::size_t attempt = 0; attempt < attempts.size(); ++attempt) {
     exact = tet::tetrahedralize_by_projection(surfaces, attempts[attempt],
                                               part_of(request.progress, 0.05, 0.9));
-    if (attempt == 0 && asked.auto_axis)
+    if (attempt == 0 && asked.auto_axis) {
       for (const tet::Axis a : {tet::Axis::z, tet::Axis::x, tet::Axis::y})
         if (a != exact.stats.axis) attempts.push_back({.auto_axis = false, .axis = a});
+      for (int tilt = 1; tilt <= tet::kTilts; ++tilt)
+        attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = tilt});
+    }
     clock = Clock::now();
     report(request.progress, "rounding to doubles", 0.9);
     rounding = {};
     try {
       tets = tet::round_to_doubles(exact, surfaces, rounding);
       round_seconds = seconds_since(clock);
-      rounding.axes_tried = static_cast<Index>(attempt + 1);
+      rounding.directions_tried = static_cast<Index>(attempt + 1);
       break;
     } catch (const InputError&) {
       if (attempt + 1 == attempts.size()) throw;

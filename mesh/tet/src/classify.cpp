@@ -54,36 +54,49 @@ Axis choose_axis(const std::vector<ProjectionSurface>& surfaces) {
   return best;
 }
 
-void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, Surfaces& out) {
+std::array<Rational, 2> shear_of(int tilt) {
+  if (tilt == 0) return {0, 0};
+  const auto& eighths = kTiltEighths[static_cast<std::size_t>(tilt - 1)];
+  std::array<Rational, 2> shear{Rational(eighths[0], 8), Rational(eighths[1], 8)};
+  for (Rational& r : shear) r.canonicalize();  // a fraction from two integers is not reduced
+  return shear;
+}
+
+void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, int tilt,
+              Surfaces& out) {
+  const auto [a, b] = shear_of(tilt);
   for (Index s = 0; s < static_cast<Index>(surfaces.size()); ++s) {
     const TriSurface& surface = surfaces[s].surface;
     const Index first = static_cast<Index>(out.points.size());
     for (const Vec3& p : surface.points) {
       const Vec3 q = to_frame(p, axis);
-      out.points.push_back({q.x(), q.y(), q.z()});
-      out.projected.emplace_back(q.x(), q.y());
+      RationalPoint r{Rational(q.x()) + a * q.z(), Rational(q.y()) + b * q.z(), q.z()};
+      out.projected.emplace_back(K::FT(r.x), K::FT(r.y));
+      out.points.push_back(std::move(r));
     }
     for (const auto& t : surface.triangles) {
-      const Vec3 a = to_frame(surface.points[t[0]], axis);
-      const Vec3 b = to_frame(surface.points[t[1]], axis);
-      const Vec3 c = to_frame(surface.points[t[2]], axis);
       out.triangles.push_back({first + t[0], first + t[1], first + t[2]});
       out.surface.push_back(s);
-      out.facing.push_back(facing_of(a, b, c));
+      switch (CGAL::orientation(out.projected[first + t[0]], out.projected[first + t[1]],
+                                out.projected[first + t[2]])) {
+        case CGAL::LEFT_TURN: out.facing.push_back(Facing::top); break;
+        case CGAL::RIGHT_TURN: out.facing.push_back(Facing::bot); break;
+        default: out.facing.push_back(Facing::wall);
+      }
     }
     out.label.push_back(surfaces[s].label);
   }
   out.plane.resize(out.triangles.size());
   for (std::size_t t = 0; t < out.triangles.size(); ++t) {
     if (out.facing[t] == Facing::wall) continue;
-    const RationalPoint& a = out.points[out.triangles[t][0]];
-    const RationalPoint& b = out.points[out.triangles[t][1]];
-    const RationalPoint& c = out.points[out.triangles[t][2]];
-    const Rational ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const Rational vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const RationalPoint& p = out.points[out.triangles[t][0]];
+    const RationalPoint& q = out.points[out.triangles[t][1]];
+    const RationalPoint& r = out.points[out.triangles[t][2]];
+    const Rational ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+    const Rational vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
     const Rational nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
     Rational ca = -nx / nz, cb = -ny / nz;
-    Rational cc = a.z - ca * a.x - cb * a.y;
+    Rational cc = p.z - ca * p.x - cb * p.y;
     out.plane[t] = {std::move(ca), std::move(cb), std::move(cc)};
   }
 }

@@ -9,8 +9,10 @@ namespace volmesh::tet {
 
 namespace {
 
-// Back from the projection frame (classify.cpp's cyclic permutation).
-void from_frame(RationalPoint& p, Axis axis) {
+// Back from the projection frame: classify.cpp's shear, then its cyclic permutation.
+void from_frame(RationalPoint& p, Axis axis, const std::array<mpq_class, 2>& shear) {
+  p.x -= shear[0] * p.z;
+  p.y -= shear[1] * p.z;
   switch (axis) {
     case Axis::x: p = {p.z, p.x, p.y}; break;
     case Axis::y: p = {p.y, p.z, p.x}; break;
@@ -48,6 +50,13 @@ const char* axis_name(Axis axis) {
   return "z";
 }
 
+std::string direction_name(Axis axis, int tilt) {
+  std::string name = axis_name(axis);
+  if (tilt == 0) return name;
+  const auto shear = detail::shear_of(tilt);
+  return name + " tilted by (" + shear[0].get_str() + ", " + shear[1].get_str() + ")";
+}
+
 ProjectionMesh tetrahedralize_by_projection(const std::vector<ProjectionSurface>& surfaces,
                                             const ProjectionOptions& options,
                                             const Progress& progress) {
@@ -62,7 +71,8 @@ ProjectionMesh tetrahedralize_by_projection(const std::vector<ProjectionSurface>
   };
   report(progress, "classify", 0.0);
   stats.axis = options.auto_axis ? detail::choose_axis(surfaces) : options.axis;
-  detail::classify(surfaces, stats.axis, state.input);
+  stats.tilt = options.tilt;
+  detail::classify(surfaces, stats.axis, stats.tilt, state.input);
   stage("classify", 0.05);
   detail::project(state);
   stage("project", 0.3);
@@ -75,7 +85,8 @@ ProjectionMesh tetrahedralize_by_projection(const std::vector<ProjectionSurface>
   stage("fill", 1.0);
 
   mesh.points = std::move(state.points);
-  for (RationalPoint& p : mesh.points) from_frame(p, stats.axis);
+  const std::array<mpq_class, 2> shear = detail::shear_of(stats.tilt);
+  for (RationalPoint& p : mesh.points) from_frame(p, stats.axis, shear);
 
   const detail::Surfaces& in = state.input;
   stats.triangles = static_cast<Index>(in.triangles.size());

@@ -83,7 +83,9 @@ struct State {
 };
 
 // Stages (projection.hpp says what each does).
-void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, Surfaces& out);
+void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, int tilt, Surfaces& out);
+// The shear of tilt k (0: none), (a, b).
+std::array<Rational, 2> shear_of(int tilt);
 Axis choose_axis(const std::vector<ProjectionSurface>& surfaces);
 void project(State& state);
 void build_prisms(State& state);

@@ -62,7 +62,8 @@ TetMesh round_to_doubles(const ProjectionMesh& exact,
     Index corners = 0;
     for (const Index t : tets)
       for (int k = 0; k < 3; ++k, ++corners) mean += mesh.points[mesh.cells[t][k]];
-    mesh.points[centre] = mean / static_cast<double>(corners);
+    mean /= static_cast<double>(corners);
+    mesh.points[centre] = mean;
     for (const Index t : tets)
       if (!positive(mesh.points, mesh.cells[t]))
         throw InputError("tet-projection: rounding to doubles flattens or inverts tet " +

@@ -38,10 +38,19 @@ struct ProjectionSurface {
   std::string name = "surface";
 };
 
+// The oblique directions a projection may take besides the axes: tilt k (1 to kTilts) projects
+// along (-a, -b, 1) in the axis's frame, (a, b) = kTilt[k - 1], by the exact shear
+// (x + a z, y + b z, z). Dyadic, so sheared doubles stay short rationals; generic, so that
+// points and edges of a symmetric model that meet in projection only up to rounding (a
+// rotated cube's corners over a grid line) do not make prisms thinner than a double.
+inline constexpr int kTilts = 3;
+inline constexpr std::array<std::array<int, 2>, kTilts> kTiltEighths{{{1, -2}, {-2, 1}, {3, 2}}};
+
 struct ProjectionOptions {
   // The projection axis; auto (none given) takes the one with the fewest WALL triangles.
   bool auto_axis = true;
   Axis axis = Axis::z;
+  int tilt = 0;  // 0: along the axis; 1 to kTilts: tilted (kTiltEighths, in eighths)
 };
 
 struct RationalPoint {
@@ -50,6 +59,7 @@ struct RationalPoint {
 
 struct ProjectionStats {
   Axis axis = Axis::z;
+  int tilt = 0;
   Index triangles = 0, top = 0, bot = 0, wall = 0;
   Index plane_vertices = 0, plane_triangles = 0;  // the constrained triangulation
   Index prisms = 0, degenerate_prisms = 0;        // degenerate: two corners coincide
@@ -79,5 +89,7 @@ ProjectionMesh tetrahedralize_by_projection(const std::vector<ProjectionSurface>
                                             const Progress& progress = {});
 
 const char* axis_name(Axis axis);
+// "z", or "z tilted by (1/8, -1/4)".
+std::string direction_name(Axis axis, int tilt);
 
 }  // namespace volmesh::tet

@@ -4,7 +4,7 @@
 // input points round to themselves; a Steiner point may not, and a thin tet can flatten or
 // turn over. Such a tet's prism centre (its interior Steiner point) is moved to the mean of
 // the rounded corners of the prism's boundary triangles, computed in doubles, when that makes all the prism's tets
-// positive; otherwise the mesh is refused (the caller may project along another axis).
+// positive; otherwise the mesh is refused (the caller may project along another direction).
 #include <string>
 #include <vector>
 
@@ -16,7 +16,7 @@ namespace volmesh::tet {
 struct Rounding {
   Index moved_points = 0;      // Steiner points not representable as doubles, rounded
   Index repaired_prisms = 0;   // prisms whose centre was moved to keep its tets positive
-  Index axes_tried = 1;        // projection axes tried before one rounded (the caller's count)
+  Index directions_tried = 1;  // projection directions tried before one rounded (the caller's)
 };
 
 // The mesh in doubles; boundary faces on the outermost surfaces, tagged by surface (tag s
