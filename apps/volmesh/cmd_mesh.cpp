@@ -33,6 +33,7 @@ constexpr double kMeshingShare = 0.9, kDecomposingAt = 0.93, kWritingAt = 0.96;
 struct MeshOptions {
   std::string method, domain, output;
   int level = 5;
+  bool level_given = false;  // --level on the command line, not its default
   std::optional<double> size;
   meshers::MethodOptions given;
   std::string decompose;  // "" or "tets"
@@ -67,7 +68,7 @@ int run_mesh(const MeshOptions& opt) {
   ProgressLine progress(opt.method, opt.quiet);
   meshers::MeshRequest request;
   request.domain_name = domain_display_name(opt.domain);
-  if (info.resolution == meshers::Resolution::level) request.level = opt.level;
+  if (info.resolution == meshers::Resolution::level || opt.level_given) request.level = opt.level;
   request.size = opt.size;
   request.options = opt.given;
   request.progress = part_of(progress.progress(), 0.0, kMeshingShare);
@@ -146,7 +147,7 @@ Command add_mesh_command(CLI::App& root) {
       ->required();
   app->add_option("-o,--output", opt->output, "output mesh (.vtu .msh .mesh .inp DIR.foam/)")
       ->required();
-  app->add_option("--level", opt->level,
+  CLI::Option* level = app->add_option("--level", opt->level,
                   "octree depth at boundaries and interfaces (grid: 2^level cells per axis)")
       ->capture_default_str();
   if (any_mesher_by_size())
@@ -170,7 +171,10 @@ Examples:
   volmesh mesh staircase part.stl --level 7 -o part.foam/ --json
   volmesh mesh grid builtin:box --level 4 --tets -o box.msh
   volmesh mesh cutcell builtin:primitives --level 4 -o primitives.msh --decompose tets)");
-  return {app, [opt] { return run_mesh(*opt); }};
+  return {app, [opt, level] {
+            opt->level_given = level->count() > 0;
+            return run_mesh(*opt);
+          }};
 }
 
 }  // namespace volmesh::cli

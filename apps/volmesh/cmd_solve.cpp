@@ -72,7 +72,7 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   in.domain_name = domain_display_name(spec);
   meshers::MeshRequest request;
   request.domain_name = in.domain_name;
-  request.level = opt.level;
+  if (opt.level >= 0) request.level = opt.level;
   request.uniform = true;
   request.options = opt.given;
   request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
@@ -163,7 +163,8 @@ int run_solve(const SolveOptions& opt) {
                        {"solve", report.solve_seconds},
                        {"write", write_seconds},
                        {"total", seconds_since(start)}}}};
-    if (!opt.method.empty()) j["method"] = opt.method, j["level"] = opt.level, j["h"] = in.h;
+    if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
+    if (opt.level >= 0) j["level"] = opt.level;
     if (!warning.empty()) j["warning"] = warning;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -230,7 +231,6 @@ Command add_solve_command(CLI::App& root) {
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);
-  method->needs(level);
   level->needs(method);
   app->footer(
       "Examples:\n"
@@ -238,10 +238,14 @@ Command add_solve_command(CLI::App& root) {
       "--level 4 -o ball.vtu\n"
       "  volmesh solve poisson --mesh part.vtu --exact \"sin(x)*exp(y*z)\" -o u.vtu --json\n"
       "  volmesh solve elasticity --problem elastic-patch --method grid --level 3 -o patch.vtu");
-  app->callback([app, mesh, method] {
+  app->callback([app, mesh, method, level, opt] {
     if (mesh->count() == 0 && method->count() == 0)
       throw CLI::ValidationError("--mesh or --method", "give a mesh (--mesh M) or a method "
                                                        "(--method X --domain D --level N)");
+    // A surface method meshes the surface as given; every other one needs its resolution.
+    if (method->count() > 0 && level->count() == 0 &&
+        meshers::find_mesher(opt->method).resolution == meshers::Resolution::level)
+      throw CLI::ValidationError("--method " + opt->method, "needs --level");
   });
   return {app, [opt] { return run_solve(*opt); }};
 }

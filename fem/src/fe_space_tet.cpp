@@ -2,6 +2,7 @@
 // mesh edge (core's sorted edge list) at its midpoint.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fe_space.hpp"
@@ -14,8 +15,10 @@ namespace volmesh::fem::detail {
 namespace {
 
 // Volume relative to the cube of the longest edge below which a tet counts as degenerate
-// (a regular tet has 0.118).
-constexpr double kDegenerateShape = 1e-12;
+// (a regular tet has 0.118): where the computed volume is within rounding of zero, so its
+// element matrices would be noise. Thinner valid tets are solved on: the projection mesher's
+// are exact-positive and can be very flat.
+constexpr double kDegenerateShape = 8.0 * std::numeric_limits<double>::epsilon();
 
 class TetSpace final : public FeSpace {
  public:

@@ -149,6 +149,40 @@ TEST(CliConvert, HexdcHexesReachEveryFormat) {
   }
 }
 
+// The projection mesher's tets written straight to each format: meshio reads the same
+// tets and volume from every file, gmsh checks the MSH (at a tolerance below the closest
+// pair of its points: Steiner points where projected edges cross nearly parallel can lie
+// 1e-8 apart, which gmsh's default tolerance would call duplicates).
+TEST(CliConvert, TetProjectionTetsReachEveryFormat) {
+  const fs::path dir = test::scratch_dir("convert-tet-projection");
+  const std::string surface = VOLMESH_CGAL_DATA "/meshes/anchor.off";
+  std::vector<fs::path> files;
+  for (const char* ext : {".vtu", ".msh", ".mesh", ".inp"}) {
+    files.push_back(dir / (std::string("anchor") + ext));
+    const auto r = run_volmesh("mesh tet-projection " + surface + " -o " + files.back().string(),
+                               dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const PolyMesh tets = read_vtu(files.front());
+  const ValidityReport expected = check_validity(tets);
+  ASSERT_TRUE(expected.valid());
+  std::string output;
+  ASSERT_TRUE(fs::exists("/usr/bin/gmsh")) << "`make test` installs gmsh";
+  EXPECT_EQ(test::run("/usr/bin/gmsh -nopopup '" + files[1].string() + "' -tol 1e-15 -check",
+                      &output, true),
+            0)
+      << output;
+  EXPECT_EQ(output.find("Error"), std::string::npos) << output;
+  const auto seen = meshio_region_volumes(files);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string what = files[i].filename().string();
+    EXPECT_EQ(seen[i].value("cells", nlohmann::json::object()),
+              nlohmann::json({{"tetra", tets.num_cells()}}))
+        << what;
+    expect_same_volumes(expected, seen[i], what);
+  }
+}
+
 // Without --decompose the element formats refuse a polyhedron, name the option and write
 // nothing; a cell that no point sees whole is named; the option takes "tets" only.
 TEST(CliConvert, PolyhedraNeedTheOptionAndStarShapedCells) {

@@ -342,12 +342,13 @@ int count_after(const std::string& report, const std::string& label) {
   return at == std::string::npos ? 0 : std::stoi(report.substr(at + label.size()));
 }
 
-TEST(CliMesh, StaircaseAndHexdcFoamCasesPassCheckMesh) {
+TEST(CliMesh, StaircaseHexdcAndTetProjectionFoamCasesPassCheckMesh) {
   for (const auto& [args, name] :
        std::vector<std::pair<std::string, std::string>>{
            {"staircase builtin:ball --level 4", "staircase"},
            {"hexdc builtin:ball --level 4", "hexdc-ball"},
-           {"hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 3", "hexdc-cube"}}) {
+           {"hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 3", "hexdc-cube"},
+           {"tet-projection " VOLMESH_TEST_DATA "/domains/inner_cube.off", "tet-projection"}}) {
     const std::string report = check_mesh_report(args, name);
     if (report.empty()) GTEST_SKIP() << "checkMesh not found: `make test` installs openfoam";
     EXPECT_NE(report.find("Mesh OK."), std::string::npos) << args << "\n" << report;

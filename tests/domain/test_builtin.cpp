@@ -10,16 +10,16 @@ namespace volmesh {
 namespace {
 
 TEST(Builtin, NamesAndUnknownName) {
-  EXPECT_EQ(builtin_domain_names(), (std::vector<std::string>{"ball", "box", "cube-inclusion",
-                                                              "layers6", "primitives",
-                                                              "thick-sphere"}));
+  EXPECT_EQ(builtin_domain_names(),
+            (std::vector<std::string>{"ball", "box", "cube-inclusion", "layers6", "primitives",
+                                      "schoenhardt", "thick-sphere", "twisted-prism:K:DEG"}));
   try {
     make_builtin_domain("nope");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "builtin:nope: unknown built-in domain (valid: ball, box, cube-inclusion, layers6, "
-              "primitives, thick-sphere)");
+              "primitives, schoenhardt, thick-sphere, twisted-prism:K:DEG)");
   }
   EXPECT_THROW(builtin_region_volumes("nope"), InputError);
 }
@@ -35,10 +35,11 @@ TEST_P(BuiltinVolumes, MatchTheClosedForms) {
 
 INSTANTIATE_TEST_SUITE_P(All, BuiltinVolumes,
                          testing::Values("ball", "box", "cube-inclusion", "primitives",
-                                         "thick-sphere"),
+                                         "thick-sphere", "schoenhardt", "twisted-prism:5:100"),
                          [](const auto& info) {
                            std::string n = info.param;
-                           std::replace(n.begin(), n.end(), '-', '_');
+                           for (char& c : n)
+                             if (c == '-' || c == ':') c = '_';
                            return n;
                          });
 

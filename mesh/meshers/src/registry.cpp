@@ -24,6 +24,23 @@ std::string methods_phrase(const std::vector<std::string>& names) {
   return text + (names.size() == 1 ? " method" : " methods");
 }
 
+// Throws InputError unless the request gives the method's resolution and no other.
+void require_resolution(const MesherInfo& info, const MeshRequest& request) {
+  const bool level = request.level.has_value(), size = request.size.has_value();
+  if (info.resolution == Resolution::surface) {
+    if (level || size)
+      throw InputError(info.name + " meshes the domain's triangulated surfaces as they are: no " +
+                       (level ? "--level" : "--size"));
+    return;
+  }
+  const bool by_level = info.resolution == Resolution::level;
+  const bool wanted = by_level ? level : size;
+  const bool other = by_level ? size : level;
+  if (!wanted || other)
+    throw InputError(info.name + " meshes by " + (by_level ? "--level" : "--size") +
+                     (other ? (by_level ? ", not --size" : ", not --level") : ": none given"));
+}
+
 }  // namespace
 
 Registration::Registration(MesherInfo info) {
@@ -100,12 +117,7 @@ void check_options(const MesherInfo& info, const MethodOptions& options) {
 
 MeshResult mesh(const MesherInfo& info, const Domain& domain, const MeshRequest& request) {
   check_options(info, request.options);
-  const bool by_level = info.resolution == Resolution::level;
-  const bool wanted = by_level ? request.level.has_value() : request.size.has_value();
-  const bool other = by_level ? request.size.has_value() : request.level.has_value();
-  if (!wanted || other)
-    throw InputError(info.name + " meshes by " + (by_level ? "--level" : "--size") +
-                     (other ? (by_level ? ", not --size" : ", not --level") : ": none given"));
+  require_resolution(info, request);
   if (request.uniform && request.options.contains("base-level"))
     throw InputError("--base-level: a uniform mesh has its level everywhere");
   MeshResult result = info.run(domain, request);

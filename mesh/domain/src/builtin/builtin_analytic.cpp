@@ -64,14 +64,37 @@ std::unique_ptr<Domain> make_thick_sphere() {
   });
 }
 
+// builtin:cube-inclusion: the cube [0, 8]^3 holding a 3 x 3 x 3 cube about its centre,
+// rotated by the z-x-z Euler angles (pi/4, pi/6, 0). Triangulated (builtin_surfaces), the
+// outer faces are cut into squares of side 2 and the inclusion's into squares of side 1.5.
+constexpr double kOuterSide = 8.0, kInclusionHalfSide = 1.5;
+constexpr int kOuterSquares = 4, kInclusionSquares = 2;  // per edge of a face
+constexpr Index kOuterLabel = 1, kInclusionLabel = 2;
+
+Rigid inclusion_frame() {
+  return {euler_zxz(kPi / 4.0, kPi / 6.0, 0.0), Vec3::Constant(kOuterSide / 2.0)};
+}
+
 std::unique_ptr<Domain> make_cube_inclusion() {
   return own([] {
-    const Vec3 centre = Vec3::Constant(4.0);
-    const Primitive inclusion =
-        moved(box(Vec3::Constant(-1.5), Vec3::Constant(1.5), "inclusion"),
-              Rigid{euler_zxz(kPi / 4.0, kPi / 6.0, 0.0), centre});
-    return layered_domain({{box(Vec3::Zero(), Vec3::Constant(8.0), "outer"), 1}, {inclusion, 2}});
+    const Vec3 half = Vec3::Constant(kInclusionHalfSide);
+    return layered_domain({{box(Vec3::Zero(), Vec3::Constant(kOuterSide), "outer"), kOuterLabel},
+                           {moved(box(-half, half, "inclusion"), inclusion_frame()),
+                            kInclusionLabel}});
   });
+}
+
+std::map<Index, double> cube_inclusion_volumes() {
+  const double inclusion = std::pow(2.0 * kInclusionHalfSide, 3);
+  return {{kOuterLabel, std::pow(kOuterSide, 3) - inclusion}, {kInclusionLabel, inclusion}};
+}
+
+std::vector<LabelledSurface> cube_inclusion_surfaces() {
+  const Vec3 half = Vec3::Constant(kInclusionHalfSide);
+  return {{box_surface(Vec3::Zero(), Vec3::Constant(kOuterSide), kOuterSquares), kOuterLabel,
+           "outer"},
+          {box_surface(-half, half, kInclusionSquares, inclusion_frame()), kInclusionLabel,
+           "inclusion"}};
 }
 
 }  // namespace
@@ -82,9 +105,11 @@ std::vector<BuiltinDomain> analytic_builtin_domains() {
        [] { return own([] { return solid_domain(sphere(Vec3::Zero(), 1.0, "sphere")); }); },
        [] { return std::map<Index, double>{{1, ball_volume(1.0)}}; }},
       {"box", [] { return own([] { return solid_domain(box(Vec3::Zero(), Vec3::Ones())); }); },
-       [] { return std::map<Index, double>{{1, 1.0}}; }},
-      {"cube-inclusion", make_cube_inclusion,
-       [] { return std::map<Index, double>{{1, 512.0 - 27.0}, {2, 27.0}}; }},
+       [] { return std::map<Index, double>{{1, 1.0}}; },
+       [] {
+         return std::vector<LabelledSurface>{{box_surface(Vec3::Zero(), Vec3::Ones(), 1), 1, "box"}};
+       }},
+      {"cube-inclusion", make_cube_inclusion, cube_inclusion_volumes, cube_inclusion_surfaces},
       {"primitives", make_primitives, primitives_volumes},
       {"thick-sphere", make_thick_sphere,
        [] { return std::map<Index, double>{{1, ball_volume(1.0) - ball_volume(0.5)}}; }},

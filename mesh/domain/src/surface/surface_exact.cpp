@@ -6,8 +6,10 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -91,6 +93,22 @@ bool classify(const Triangle& t, const Point& a, const Point& b, Index id, Segme
                                        : vertex_feature(0);
   hit = {id, sign(sa), sign(sb), false, feature};
   return true;
+}
+
+// The parameter where segment [a, b] crosses the plane of (v0, v1, v2), in rationals.
+double exact_crossing_parameter(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& a,
+                                const Vec3& b) {
+  using Q = CGAL::Exact_rational;
+  using V = std::array<Q, 3>;
+  const auto minus = [](const Vec3& p, const Vec3& q) {
+    return V{Q(p.x()) - q.x(), Q(p.y()) - q.y(), Q(p.z()) - q.z()};
+  };
+  const V e1 = minus(v1, v0), e2 = minus(v2, v0), pa = minus(a, v0), pb = minus(b, v0);
+  const V n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+            e1[0] * e2[1] - e1[1] * e2[0]};
+  const Q da = n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2];
+  const Q db = n[0] * pb[0] + n[1] * pb[1] + n[2] * pb[2];
+  return CGAL::to_double(da / (da - db));
 }
 
 // Rays for the winding number: first along the six axes, slightly tilted so that they miss
@@ -211,11 +229,15 @@ double crossing_parameter(const SurfaceGeometry& geometry, const Vec3& a, const 
                           const SegmentHit& hit) {
   if (hit.side_a == 0) return 0.0;
   if (hit.side_b == 0) return 1.0;
-  const Vec3& v0 = geometry.corner(hit.triangle, 0);
-  const Vec3 n =
-      (geometry.corner(hit.triangle, 1) - v0).cross(geometry.corner(hit.triangle, 2) - v0);
+  const Vec3 &v0 = geometry.corner(hit.triangle, 0), &v1 = geometry.corner(hit.triangle, 1),
+             &v2 = geometry.corner(hit.triangle, 2);
+  const Vec3 n = (v1 - v0).cross(v2 - v0);
   const double da = n.dot(a - v0), db = n.dot(b - v0);
-  return std::clamp(da / (da - db), 0.0, 1.0);
+  // Rounding keeps the exact sides' signs unless the segment runs all but parallel to the
+  // plane (da and db may then both round to 0, and da / (da - db) to NaN): those are
+  // computed again in rationals.
+  if (da * hit.side_a > 0.0 && db * hit.side_b > 0.0) return std::clamp(da / (da - db), 0.0, 1.0);
+  return std::clamp(exact_crossing_parameter(v0, v1, v2, a, b), 0.0, 1.0);
 }
 
 }  // namespace volmesh::surface

@@ -15,7 +15,9 @@
 //                   surfaces named "inner" and "outer" (AnalyticDomain::surface_name)
 //   cube-inclusion  the cube [0, 8]^3 (region 1, surface "outer") with a 3 x 3 x 3 cube
 //                   centred at (4, 4, 4) and rotated by the z-x-z Euler angles
-//                   (pi/4, pi/6, 0) (region 2, surface "inclusion")
+//                   (pi/4, pi/6, 0) (region 2, surface "inclusion"); triangulated
+//                   (builtin_surfaces), the outer faces in squares of side 2 and the
+//                   inclusion's in squares of side 1.5, each split in two
 //   layers6         the octree paper's Table 2 case (layered.hpp): six layers,
 //                   labels 1 to 6 from the bottom, in the unit cube, between five horizons
 //                   z = k/6 + undulations of up to 0.045 (sums of sines, 129 x 129 vertices
@@ -25,19 +27,40 @@
 //                   volumes of the triangulated model (builtin_region_volumes):
 //                     1: 0.220185  2: 0.161633  3: 0.061861  4: 0.261482  5: 0.161674
 //                     6: 0.133166
+//   twisted-prism:K:DEG
+//                   a surface domain, one region: the prism over the regular K-gon of
+//                   circumradius 1 (vertices at angles 2 pi i / K in z = 0), height 1, its
+//                   top turned by DEG degrees counter-clockwise; each side quad split along
+//                   its reflex diagonal (from bottom vertex i to top vertex i + 1), the caps
+//                   fanned from vertex 0 (no Steiner points): 2K vertices, 4K - 4
+//                   triangles. K = 3..64; DEG in (0, 180 (K - 2) / K), the K-gon's interior
+//                   angle, at which the reflex diagonals meet on the axis (60 for K = 3, 90
+//                   for K = 4). Volume K/6 (2 sin(2 pi / K) + sin(2 pi / K + w) - sin w),
+//                   w the twist in radians.
+//   schoenhardt     Schönhardt's polyhedron, which no tetrahedralization without Steiner
+//                   points fills: twisted-prism:3:30 (6 vertices, 8 triangles, volume
+//                   sqrt(3)/2)
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "volmesh/domain/domain.hpp"
+#include "volmesh/domain/surface.hpp"
 
 namespace volmesh {
 
-std::vector<std::string> builtin_domain_names();  // sorted
-// Throws InputError naming the valid names for an unknown one.
+// Sorted; a family with parameters appears as its pattern ("twisted-prism:K:DEG").
+std::vector<std::string> builtin_domain_names();
+// Each throws InputError naming the valid names for an unknown name, or naming the built-in
+// and the range for a family's parameters out of range.
 std::unique_ptr<Domain> make_builtin_domain(const std::string& name);
 // Exact volume of each region (label -> volume) where it has a closed form; empty otherwise.
 std::map<Index, double> builtin_region_volumes(const std::string& name);
+// The triangulated boundary of a built-in bounded by polyhedra, labelled as its regions
+// (box, cube-inclusion, schoenhardt, twisted-prism:K:DEG): closed, manifold, outward, free
+// of degenerate triangles and self-intersections. Empty for the others, whose boundaries
+// are curved (ball, primitives, thick-sphere) or open sheets (layers6).
+std::vector<LabelledSurface> builtin_surfaces(const std::string& name);
 
 }  // namespace volmesh

@@ -25,12 +25,14 @@ namespace volmesh::meshers {
 enum class Resolution {
   level,  // an octree depth at the boundaries and interfaces (--level, docs/architecture.md)
   size,   // a target edge length (--size)
+  // The domain's own triangulated surfaces, as given: neither --level nor --size.
+  surface,
 };
 
 struct MeshRequest {
   std::string domain_name;     // names the domain in messages ("builtin:ball", a file name)
-  std::optional<int> level;    // Resolution::level
-  std::optional<double> size;  // Resolution::size
+  std::optional<int> level;    // Resolution::level only
+  std::optional<double> size;  // Resolution::size only
   // The same depth inside as at the boundaries (an octree's base level = level), as a
   // convergence study needs: a coarser interior would limit the rate. Octree methods only.
   bool uniform = false;

@@ -1,0 +1,161 @@
+// tet-projection: the exact projection mesher (mesh/tet, projection.hpp) on a domain's
+// triangulated surfaces, rounded back to doubles with every tet checked (rounding.hpp).
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "registration.hpp"
+#include "volmesh/core/convert.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
+#include "volmesh/domain/builtin.hpp"
+#include "volmesh/domain/surface.hpp"
+#include "volmesh/geometry/self_intersections.hpp"
+#include "volmesh/tet/projection.hpp"
+#include "volmesh/tet/rounding.hpp"
+
+namespace volmesh::meshers {
+
+namespace {
+
+constexpr std::string_view kBuiltin = "builtin:";
+
+// The domain's surfaces, labelled as its regions: a surface domain's, or the triangulation of
+// a builtin with a polyhedral boundary (builtin_surfaces).
+std::vector<tet::ProjectionSurface> surfaces_of(const Domain& domain, const std::string& name) {
+  const auto* given = dynamic_cast<const SurfaceDomain*>(&domain);
+  std::optional<SurfaceDomain> polyhedral;
+  if (given == nullptr && name.starts_with(kBuiltin)) {
+    std::vector<LabelledSurface> list = builtin_surfaces(name.substr(kBuiltin.size()));
+    if (!list.empty()) given = &polyhedral.emplace(std::move(list));
+  }
+  if (given == nullptr)
+    throw InputError("tet-projection: " + name +
+                     " is not given by triangulated surfaces; give a surface file (.stl .off "
+                     ".obj .ply) or a builtin made of triangles");
+  std::vector<tet::ProjectionSurface> out;
+  for (Index s = 0; s < static_cast<Index>(given->labels().size()); ++s) {
+    tet::ProjectionSurface p{given->surface(s), given->labels()[s], given->depths()[s] == 0};
+    p.name = domain.boundary_name(p.surface.points.front());
+    if (p.name.empty()) p.name = "surface";
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+// The method needs surfaces that neither cross themselves nor each other.
+void require_no_intersections(const std::vector<tet::ProjectionSurface>& surfaces,
+                              const std::string& name) {
+  TriSurface all;
+  for (const tet::ProjectionSurface& s : surfaces) {
+    const Index first = all.num_points();
+    all.points.insert(all.points.end(), s.surface.points.begin(), s.surface.points.end());
+    for (const auto& t : s.surface.triangles)
+      all.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  }
+  const auto pairs = find_self_intersections(all, 1);
+  if (!pairs.empty())
+    throw InputError(name + ": triangles " + std::to_string(pairs[0].first) + " and " +
+                     std::to_string(pairs[0].second) +
+                     " intersect; tet-projection needs surfaces that do not cross");
+}
+
+tet::ProjectionOptions projection_options(const MethodOptions& options) {
+  const std::string axis = given<std::string>(options, "axis").value_or("auto");
+  if (axis == "auto") return {};
+  return {.auto_axis = false,
+          .axis = axis == "x" ? tet::Axis::x : axis == "y" ? tet::Axis::y : tet::Axis::z};
+}
+
+nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& rounding,
+                          double check_seconds, double round_seconds) {
+  nlohmann::json stages = {{"check", check_seconds}};
+  for (const auto& [stage, seconds] : s.seconds) stages[stage] = seconds;
+  stages["round"] = round_seconds;
+  return {{"direction", tet::direction_name(s.axis, s.tilt)},
+          {"surface_triangles", s.triangles},
+          {"top", s.top},
+          {"bot", s.bot},
+          {"wall", s.wall},
+          {"plane", {{"vertices", s.plane_vertices}, {"triangles", s.plane_triangles}}},
+          {"prisms", s.prisms},
+          {"degenerate_prisms", s.degenerate_prisms},
+          {"tets", s.tets},
+          {"steiner_points", {{"boundary", s.boundary_steiner}, {"interior", s.interior_steiner}}},
+          {"enclosed_volume", {{"exact", s.enclosed_volume.get_str()},
+                               {"value", s.enclosed_volume.get_d()}}},
+          {"rounding", {{"moved_points", rounding.moved_points},
+                        {"repaired_prisms", rounding.repaired_prisms},
+                        {"directions_tried", rounding.directions_tried}}},
+          {"stage_seconds", stages}};
+}
+
+MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request) {
+  auto clock = Clock::now();
+  report(request.progress, "checking the surfaces", 0.0);
+  const std::vector<tet::ProjectionSurface> surfaces = surfaces_of(domain, request.domain_name);
+  require_no_intersections(surfaces, request.domain_name);
+  const double check_seconds = seconds_since(clock);
+  // A prism too thin for doubles along one direction is not along another: with the axis
+  // left to the method, a mesh that rounding cannot keep positive is made again along the
+  // other axes, then along tilted directions.
+  const tet::ProjectionOptions asked = projection_options(request.options);
+  std::vector<tet::ProjectionOptions> attempts{asked};
+  tet::ProjectionMesh exact;
+  tet::Rounding rounding;
+  TetMesh tets;
+  double round_seconds = 0.0;
+  for (std::size_t attempt = 0; attempt < attempts.size(); ++attempt) {
+    exact = tet::tetrahedralize_by_projection(surfaces, attempts[attempt],
+                                              part_of(request.progress, 0.05, 0.9));
+    if (attempt == 0 && asked.auto_axis) {
+      for (const tet::Axis a : {tet::Axis::z, tet::Axis::x, tet::Axis::y})
+        if (a != exact.stats.axis) attempts.push_back({.auto_axis = false, .axis = a});
+      for (int tilt = 1; tilt <= tet::kTilts; ++tilt)
+        attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = tilt});
+    }
+    clock = Clock::now();
+    report(request.progress, "rounding to doubles", 0.9);
+    rounding = {};
+    try {
+      tets = tet::round_to_doubles(exact, surfaces, rounding);
+      round_seconds = seconds_since(clock);
+      rounding.directions_tried = static_cast<Index>(attempt + 1);
+      break;
+    } catch (const InputError&) {
+      if (attempt + 1 == attempts.size()) throw;
+    }
+  }
+  MeshResult r;
+  r.mesh = to_poly_mesh(tets);
+  const Box3 box = domain.bounds();
+  // No size is asked for: the longest edge stands for h.
+  double h = 0.0;
+  for (const auto& t : tets.cells)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
+  r.h = h > 0.0 ? h : box.size().maxCoeff();
+  r.summary = summary_of(exact.stats, rounding, check_seconds, round_seconds);
+  return r;
+}
+
+const Registration registered{MesherInfo{
+    .name = "tet-projection",
+    .description = "tetrahedra filling triangulated surfaces by projection, exact (never fails)",
+    .resolution = Resolution::surface,
+    .octree = false,
+    .options = {{.name = "axis",
+                 .help = "projection axis (default auto: the one with the fewest vertical "
+                         "triangles)",
+                 .type = OptionSpec::Type::choice,
+                 .choices = {"x", "y", "z", "auto"}}},
+    .default_domain = "builtin:schoenhardt",
+    .default_space = "p1",
+    .run = mesh_tet_projection,
+}};
+
+}  // namespace
+
+}  // namespace volmesh::meshers
