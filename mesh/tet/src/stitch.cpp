@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "plane_cache.hpp"
 #include "projection_data.hpp"
@@ -47,12 +48,12 @@ bool wall_contains(const Surfaces& in, Index w, const Point2& q) {
   return false;
 }
 
-// A surface line over a plane edge: its heights over the edge's lower- and higher-numbered
-// ends, and the triangles along it.
+// A surface line over a plane edge: the places of its heights in the height lists of the
+// edge's lower- and higher-numbered ends, and the triangles along it. Lines over an edge
+// do not cross, so ordering them by (at_lo, at_hi) orders them upwards.
 struct Line {
-  Rational lo, hi;
+  Index at_lo = 0, at_hi = 0;
   std::vector<Index> owners;
-  Index at_lo = 0, at_hi = 0;  // its heights' places in the ends' height lists
 };
 
 [[noreturn]] void crossing(const Point2& q) {
@@ -83,6 +84,8 @@ class Stitcher {
   State& s_;
   const Surfaces& in_;
   PlaneCache walls_;
+  // Per vertex: (sloped triangle, its place in the vertex's heights), by triangle.
+  std::vector<std::vector<std::pair<Index, Index>>> places_;
 
   PlaneCache wall_rectangles() {
     std::vector<Rectangle> r;
@@ -105,25 +108,35 @@ class Stitcher {
       if (wall_contains(in_, s_.walls[item], q)) visit(s_.walls[item]);
   }
 
+  // The heights of every vertex, and the place among them of each sloped triangle over it.
   void collect_heights() {
     s_.points = in_.points;
     s_.heights.assign(s_.vertices.size(), {});
+    places_.assign(s_.vertices.size(), {});
     std::vector<Rational> z;
+    std::vector<Index> sloped;
     for (std::size_t v = 0; v < s_.vertices.size(); ++v) {
       const VertexHandle vh = s_.vertices[v];
-      z.clear();
+      sloped.clear();
       auto f = s_.plane.incident_faces(vh), end = f;
       do {
         if (!s_.plane.is_infinite(f))
-          for (const Index t : s_.stack[f->info()]) z.push_back(height_at(s_, t, vh->info()));
+          sloped.insert(sloped.end(), s_.stack[f->info()].begin(), s_.stack[f->info()].end());
       } while (++f != end);
+      std::sort(sloped.begin(), sloped.end());
+      sloped.erase(std::unique(sloped.begin(), sloped.end()), sloped.end());
+      z.clear();
+      for (const Index t : sloped) z.push_back(height_at(s_, t, vh->info()));
+      std::vector<std::pair<Index, Index>>& places = places_[v];
+      for (std::size_t k = 0; k < sloped.size(); ++k) places.emplace_back(sloped[k], k);
       walls_over(vh->point(), s_.xy[v],
                  [&](Index w) { wall_heights(in_, w, vh->point(), s_.xy[v], z); });
       for (const Index p : s_.at_vertex[v]) z.push_back(in_.points[p].z);
-      std::sort(z.begin(), z.end());
-      z.erase(std::unique(z.begin(), z.end()), z.end());
+      std::vector<Rational> distinct = z;
+      std::sort(distinct.begin(), distinct.end());
+      distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
       std::vector<Height>& heights = s_.heights[v];
-      for (const Rational& h : z) {
+      for (const Rational& h : distinct) {
         Index point = kNoIndex;
         for (const Index p : s_.at_vertex[v])
           if (in_.points[p].z == h) point = p;
@@ -133,13 +146,17 @@ class Stitcher {
         }
         heights.push_back({h, point});
       }
+      for (auto& [t, k] : places) k = place_of(heights, z[static_cast<std::size_t>(k)]);
     }
   }
 
-  Index point_over(Index v, Index t) const {
-    const std::vector<Height>& heights = s_.heights[v];
-    return heights[place_of(heights, height_at(s_, t, v))].point;
+  // Where sloped triangle t, which covers a face around v, passes over it.
+  Index place_over(Index v, Index t) const {
+    const auto& places = places_[v];
+    return std::lower_bound(places.begin(), places.end(), std::pair<Index, Index>{t, 0})->second;
   }
+
+  Index point_over(Index v, Index t) const { return s_.heights[v][place_over(v, t)].point; }
 
   // The prism's bottom and top: its plane triangle on the bottom and top triangles' planes.
   void caps(Index p) {
@@ -162,7 +179,7 @@ class Stitcher {
     std::sort(sloped.begin(), sloped.end());
     sloped.erase(std::unique(sloped.begin(), sloped.end()), sloped.end());
     std::vector<Line> lines;
-    for (const Index t : sloped) lines.push_back({height_at(s_, t, lo), height_at(s_, t, hi), {t}});
+    for (const Index t : sloped) lines.push_back({place_over(lo, t), place_over(hi, t), {t}});
     const Point2& a = s_.vertices[lo]->point();
     const Point2& b = s_.vertices[hi]->point();
     const std::array<Rational, 2> middle{(s_.xy[lo][0] + s_.xy[hi][0]) / 2,
@@ -176,26 +193,22 @@ class Stitcher {
         if (p2 == r2) continue;
         const K::Segment_2 edge(p2, r2);
         if (!edge.has_on(a) || !edge.has_on(b)) continue;
-        lines.push_back(
-            {edge_height(in_, p, r, s_.xy[lo]), edge_height(in_, p, r, s_.xy[hi]), {w}});
+        lines.push_back({place_of(s_.heights[lo], edge_height(in_, p, r, s_.xy[lo])),
+                         place_of(s_.heights[hi], edge_height(in_, p, r, s_.xy[hi])),
+                         {w}});
       }
     });
-    std::sort(lines.begin(), lines.end(),
-              [](const Line& x, const Line& y) { return x.lo + x.hi < y.lo + y.hi; });
+    std::sort(lines.begin(), lines.end(), [](const Line& x, const Line& y) {
+      return std::tie(x.at_lo, x.at_hi) < std::tie(y.at_lo, y.at_hi);
+    });
     std::vector<Line> merged;
     for (Line& l : lines) {
-      if (!merged.empty() && merged.back().lo + merged.back().hi == l.lo + l.hi) {
-        if (merged.back().lo != l.lo) crossing(CGAL::midpoint(a, b));
+      if (!merged.empty() && merged.back().at_lo == l.at_lo && merged.back().at_hi == l.at_hi) {
         merged.back().owners.insert(merged.back().owners.end(), l.owners.begin(), l.owners.end());
         continue;
       }
-      if (!merged.empty() && (l.lo < merged.back().lo || l.hi < merged.back().hi))
-        crossing(CGAL::midpoint(a, b));
+      if (!merged.empty() && l.at_hi < merged.back().at_hi) crossing(CGAL::midpoint(a, b));
       merged.push_back(std::move(l));
-    }
-    for (Line& l : merged) {
-      l.at_lo = place_of(s_.heights[lo], l.lo);
-      l.at_hi = place_of(s_.heights[hi], l.hi);
     }
     return merged;
   }
