@@ -1,8 +1,6 @@
 #include <gtest/gtest.h>
 #include <map>
 
-#include <cmath>
-#include <numbers>
 
 #include "exact_checks.hpp"
 #include "volmesh/core/errors.hpp"
@@ -24,26 +22,6 @@ TriSurface box_surface(const Vec3& lo, const Vec3& hi) {
   for (const auto& q : quads) {
     s.triangles.push_back({q[0], q[1], q[2]});
     s.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return s;
-}
-
-// A K-gon prism of circumradius 1 and height 1 whose top is turned by `twist` degrees, the
-// sides split along the diagonals that make them reflex (Schönhardt's for K = 3, 30 degrees).
-TriSurface twisted_prism(int k, double twist) {
-  TriSurface s;
-  const double step = 2.0 * std::numbers::pi / k, turn = twist * std::numbers::pi / 180.0;
-  for (int i = 0; i < k; ++i) s.points.emplace_back(std::cos(i * step), std::sin(i * step), 0.0);
-  for (int i = 0; i < k; ++i)
-    s.points.emplace_back(std::cos(i * step + turn), std::sin(i * step + turn), 1.0);
-  for (int i = 1; i + 1 < k; ++i) {
-    s.triangles.push_back({0, i + 1, i});
-    s.triangles.push_back({k, k + i, k + i + 1});
-  }
-  for (int i = 0; i < k; ++i) {
-    const int j = (i + 1) % k;
-    s.triangles.push_back({i, j, k + j});
-    s.triangles.push_back({i, k + j, k + i});
   }
   return s;
 }
@@ -122,17 +100,21 @@ TEST(Projection, TiltedDirections) {
 }
 
 TEST(Projection, SchoenhardtNeedsInteriorSteinerPoints) {
-  const ProjectionMesh m = mesh_of({{twisted_prism(3, 30.0)}});
+  const ProjectionMesh m = mesh_of(builtin("schoenhardt"));
   EXPECT_EQ(m.stats.triangles, 8);
   EXPECT_GT(m.stats.interior_steiner, 0);
 }
 
+// K-gon prisms twisted by a little, by half their limit 180 (K - 2) / K, and by just below it.
 TEST(Projection, TwistedPrisms) {
-  for (int k = 3; k <= 8; ++k)
-    for (const double twist : {5.0, 30.0, 170.0 / k}) {
-      SCOPED_TRACE(std::to_string(k) + " " + std::to_string(twist));
-      mesh_of({{twisted_prism(k, twist)}});
+  for (int k = 3; k <= 8; ++k) {
+    const double limit = 180.0 * (k - 2) / k;
+    for (const double twist : {5.0, limit / 2, limit - 0.5}) {
+      const std::string name = "twisted-prism:" + std::to_string(k) + ":" + std::to_string(twist);
+      SCOPED_TRACE(name);
+      mesh_of(builtin(name));
     }
+  }
 }
 
 TEST(Projection, SphereHasNoWalls) {

@@ -2,6 +2,9 @@
 // orientation of its projection (its outward normal's sign along the axis).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "projection_data.hpp"
 
 namespace volmesh::tet::detail {
@@ -99,6 +102,15 @@ void classify(const std::vector<ProjectionSurface>& surfaces, Axis axis, int til
     Rational cc = p.z - ca * p.x - cb * p.y;
     out.plane[t] = {std::move(ca), std::move(cb), std::move(cc)};
   }
+}
+
+std::array<double, 4> projected_box(const Surfaces& input, Index t) {
+  std::array<double, 4> box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const Index p : input.triangles[t]) {
+    const double x = input.points[p].x.get_d(), y = input.points[p].y.get_d();
+    box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
+  }
+  return box;
 }
 
 Rational height_at(const Surfaces& input, Index t, const Rational& x, const Rational& y) {

@@ -1,7 +1,6 @@
 // Stage 3: the triangles over each plane triangle, sorted upwards (they cannot cross inside
 // it: every projected edge is a constraint), and a prism in each gap inside the domain.
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "plane_cache.hpp"
@@ -11,15 +10,6 @@
 namespace volmesh::tet::detail {
 
 namespace {
-
-Rectangle rectangle_of(const Surfaces& in, Index t) {
-  Rectangle r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (const Index p : in.triangles[t]) {
-    const double x = in.points[p].x.get_d(), y = in.points[p].y.get_d();
-    r = {std::min(r[0], x), std::min(r[1], y), std::max(r[2], x), std::max(r[3], y)};
-  }
-  return r;
-}
 
 bool covers(const Surfaces& in, Index t, const Point2& q) {
   const auto& c = in.triangles[t];
@@ -47,7 +37,7 @@ void build_prisms(State& state) {
   for (Index t = 0; t < static_cast<Index>(in.triangles.size()); ++t)
     if (in.facing[t] != Facing::wall) {
       sloped.push_back(t);
-      rectangles.push_back(rectangle_of(in, t));
+      rectangles.push_back(projected_box(in, t));
     }
   const PlaneCache cache(rectangles);
   state.stack.assign(state.faces.size(), {});

@@ -94,6 +94,8 @@ void fill(State& state, ProjectionMesh& mesh);
 
 // Height of non-WALL triangle t over plane vertex v (the corner's own z when v is a corner).
 Rational height_at(const State& state, Index t, Index v);
+// The bounding rectangle of triangle t's projection, in doubles, for the plane caches.
+std::array<double, 4> projected_box(const Surfaces& input, Index t);
 // z of triangle t's plane over (x, y).
 Rational height_at(const Surfaces& input, Index t, const Rational& x, const Rational& y);
 

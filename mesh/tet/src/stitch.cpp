@@ -4,7 +4,6 @@
 // the heights on its two sides as its only corners. Both prisms beside a side face cut it
 // from the same bands, so their triangles match, and every prism's boundary is closed.
 #include <algorithm>
-#include <cmath>
 #include <string>
 #include <tuple>
 
@@ -92,12 +91,7 @@ class Stitcher {
     for (Index t = 0; t < static_cast<Index>(in_.triangles.size()); ++t) {
       if (in_.facing[t] != Facing::wall) continue;
       s_.walls.push_back(t);
-      Rectangle box{INFINITY, INFINITY, -INFINITY, -INFINITY};
-      for (const Index p : in_.triangles[t]) {
-        const double x = in_.points[p].x.get_d(), y = in_.points[p].y.get_d();
-        box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
-      }
-      r.push_back(box);
+      r.push_back(projected_box(in_, t));
     }
     return PlaneCache(r);
   }
