@@ -12,7 +12,7 @@ or timed out: 124), NAME.err (the refusal), NAME.time (/usr/bin/time "%e %U %S")
 NAME.check.json (`volmesh check --json`) when a mesh was written. Per TetGen run:
 NAME.tetgen ("exit nodes tets"), NAME.tetgen.time, NAME.tetgen.log.
 """
-import csv
+import importlib.util
 import json
 import math
 import sys
@@ -23,8 +23,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+
+def _hexdc_report():
+    """validation/hexdc/report.py, whose markdown table, CSV/JSON rows and refusal reading
+    this report shares."""
+    path = Path(__file__).resolve().parent.parent / "hexdc" / "report.py"
+    spec = importlib.util.spec_from_file_location("hexdc_report", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+_HEXDC = _hexdc_report()
+table, write_rows, refusal, DASH = _HEXDC.table, _HEXDC.write_rows, _HEXDC.refusal, _HEXDC.DASH
+
 TIMEOUT_EXIT = 124
-DASH = "—"
 SCHOENHARDT_LIMIT_DEG = 180.0 - 360.0 / 3  # surfaces.py twist-limit 3
 VOLUME_TOLERANCE = 1e-9  # relative: the written doubles against the exact volume
 # Bounds of the paper's section "Оценка вычислительной сложности".
@@ -40,13 +53,6 @@ def load_json(path):
         return json.loads(path.read_text())
     except json.JSONDecodeError:
         return None
-
-
-def refusal(out, name):
-    """The mesher's one-line refusal, without the program's prefix."""
-    path = out / f"{name}.err"
-    lines = [l for l in path.read_text().splitlines() if "error:" in l] if path.exists() else []
-    return lines[-1].split("error:", 1)[1].strip() if lines else "(no message)"
 
 
 def wall_time(out, suffix_name):
@@ -65,24 +71,6 @@ def fmt(value, spec=""):
     if spec:
         return format(value, spec)
     return f"{value:,}" if isinstance(value, int) else f"{value:.3g}"
-
-
-def write_rows(results, section, rows):
-    """rows: a list of flat dicts with the same keys."""
-    (results / f"{section}.json").write_text(json.dumps(rows, indent=1, ensure_ascii=False) + "\n")
-    if rows:
-        with open(results / f"{section}.csv", "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
-
-
-def table(header, rows):
-    print("| " + " | ".join(header) + " |")
-    print("|" + "---|" * len(header))
-    for r in rows:
-        print("| " + " | ".join(fmt(v) for v in r) + " |")
-    print()
 
 
 def off_faces(path):
