@@ -292,6 +292,21 @@ def tetgen(out, results, named):
     table(header, [r for r in rows if r[0] in named.split(",")])
     print("### Every surface\n")
     table(header, rows)
+    timed = [r for r in j if r["N"] and r["ours_ok"] and r["tetgen_p_ok"]]
+    if timed:
+        plt.figure(figsize=(6, 4.5))
+        n = [r["N"] for r in timed]
+        plt.loglog(n, [r["ours_seconds"] for r in timed], "o", label="tet-projection")
+        plt.loglog(n, [r["tetgen_p_seconds"] for r in timed], "s", label="TetGen -pQ",
+                   alpha=0.6)
+        plt.xlabel("surface triangles N")
+        plt.ylabel("seconds")
+        plt.legend()
+        plt.title("libcgal-demo sweep: time against N")
+        plt.tight_layout()
+        plt.savefig(results / "tetgen-times.png", dpi=110)
+        plt.close()
+        print("![times](tetgen-times.png)\n")
     write_rows(results, "tetgen", json_rows)
 
 
