@@ -208,19 +208,31 @@ def sweep(out, results, meshes, named):
             print(f"- {r['surface']}: `{r['message'].split('.off: ', 1)[-1]}`")
     print()
     if meshed:
-        plt.figure(figsize=(6, 4.5))
-        n = np.array([r["N"] for r in meshed], float)
-        plt.loglog(n, [r["M"] for r in meshed], "o", label="prisms M")
-        plt.loglog(n, [r["tets"] for r in meshed], "s", label="tets", alpha=0.6)
-        plt.loglog(n, n / 2, "k--", lw=0.8, label="N/2 (paper's best case)")
-        plt.xlabel("surface triangles N")
-        plt.legend()
-        plt.title("libcgal-demo sweep: prisms and tets against N")
-        plt.tight_layout()
-        plt.savefig(results / "sweep-counts.png", dpi=110)
-        plt.close()
-        print("![sweep counts](sweep-counts.png)\n")
+        n = sorted(r["N"] for r in meshed)
+        scatter_against_n(results / "sweep-counts.png",
+                          "libcgal-demo sweep: prisms and tets against N", "count",
+                          [(meshed, "M", "o", "prisms M"), (meshed, "tets", "s", "tets")],
+                          (n, [v / 2 for v in n], "N/2 (paper's best case)"))
     write_rows(results, "sweep", rows)
+
+
+def scatter_against_n(path, title, ylabel, series, reference=None):
+    """A log-log scatter of rows' values against their N, printed as a markdown image.
+    series: (rows, key, marker, label); reference: (x, y, label), drawn dashed."""
+    plt.figure(figsize=(6, 4.5))
+    for rows, key, marker, label in series:
+        plt.loglog([r["N"] for r in rows], [r[key] for r in rows], marker, label=label,
+                   alpha=0.7)
+    if reference:
+        plt.loglog(reference[0], reference[1], "k--", lw=0.8, label=reference[2])
+    plt.xlabel("surface triangles N")
+    plt.ylabel(ylabel)
+    plt.legend()
+    plt.title(title)
+    plt.tight_layout()
+    plt.savefig(path, dpi=110)
+    plt.close()
+    print(f"![{title}]({path.name})\n")
 
 
 def sweep_surfaces(out):
@@ -294,19 +306,9 @@ def tetgen(out, results, named):
     table(header, rows)
     timed = [r for r in j if r["N"] and r["ours_ok"] and r["tetgen_p_ok"]]
     if timed:
-        plt.figure(figsize=(6, 4.5))
-        n = [r["N"] for r in timed]
-        plt.loglog(n, [r["ours_seconds"] for r in timed], "o", label="tet-projection")
-        plt.loglog(n, [r["tetgen_p_seconds"] for r in timed], "s", label="TetGen -pQ",
-                   alpha=0.6)
-        plt.xlabel("surface triangles N")
-        plt.ylabel("seconds")
-        plt.legend()
-        plt.title("libcgal-demo sweep: time against N")
-        plt.tight_layout()
-        plt.savefig(results / "tetgen-times.png", dpi=110)
-        plt.close()
-        print("![times](tetgen-times.png)\n")
+        scatter_against_n(results / "tetgen-times.png", "libcgal-demo sweep: time against N",
+                          "seconds", [(timed, "ours_seconds", "o", "tet-projection"),
+                                      (timed, "tetgen_p_seconds", "s", "TetGen -pQ")])
     write_rows(results, "tetgen", json_rows)
 
 
