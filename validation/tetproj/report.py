@@ -282,7 +282,7 @@ def tetgen(out, results, named):
                           "time_ratio_vs_pQ": ratio})
     print("Debian's TetGen 1.5 on a copy of each surface the input check accepts: `tetgen -pQ` "
           "(may split boundary faces) and `tetgen -pYQ` (keeps the boundary as given; its "
-          f"nodes are the input vertices plus its Steiner points). Time: the process's wall "
+          "nodes are the input vertices plus its Steiner points). Time: the process's wall "
           "time (reading and writing included); ours: the mesher's time_seconds. ratio: ours / "
           "TetGen -pQ (the issue's target: ≤ 10 on elephant, fandisk, knot1).\n")
     j = json_rows

@@ -27,6 +27,7 @@ cd "$(dirname "$0")/../.."
 ROOT=$PWD
 HERE=$ROOT/validation/tetproj
 OCTREE=$ROOT/validation/octree
+# shellcheck disable=SC2034  # BUILD is read by setup.sh
 BUILD=${VALIDATION_BUILD:-$ROOT/build/release}
 RESULTS=${TETPROJ_RESULTS:-$ROOT/build/validation-tetproj}
 OUT=$RESULTS/out
