@@ -91,7 +91,7 @@ def run_row(out, name, surface_file=None, surface_path=None):
     row = {"name": name, "status": "not run", "message": "", "N": None, "top": None,
            "bot": None, "wall": None, "plane_vertices": None, "plane_triangles": None, "M": None,
            "degenerate_prisms": None, "tets": None, "vertices": None, "steiner_boundary": None,
-           "steiner_interior": None, "axis": None, "axes_tried": None, "moved_points": None,
+           "steiner_interior": None, "direction": None, "directions_tried": None, "moved_points": None,
            "repaired_prisms": None, "seconds": wall_time(out, name), "valid": None,
            "check_valid": None, "volume_exact": None, "volume": None, "mesh_volume": None,
            "volume_difference": None}
@@ -117,8 +117,8 @@ def run_row(out, name, surface_file=None, surface_path=None):
                plane_triangles=plane.get("triangles"), M=run.get("prisms"),
                degenerate_prisms=run.get("degenerate_prisms"), tets=run.get("tets"),
                vertices=run.get("vertices"), steiner_boundary=steiner.get("boundary"),
-               steiner_interior=steiner.get("interior"), axis=run.get("axis"),
-               axes_tried=rounding.get("axes_tried"), moved_points=rounding.get("moved_points"),
+               steiner_interior=steiner.get("interior"), direction=run.get("direction"),
+               directions_tried=rounding.get("directions_tried"), moved_points=rounding.get("moved_points"),
                repaired_prisms=rounding.get("repaired_prisms"),
                seconds=run.get("time_seconds", row["seconds"]),
                valid=run.get("validity", {}).get("valid"), volume_exact=volume.get("exact"),
@@ -144,13 +144,13 @@ def mesh_cells(row):
     return [row["N"], f"{fmt(row['top'])}/{fmt(row['bot'])}/{fmt(row['wall'])}", row["M"],
             row["degenerate_prisms"], row["tets"],
             f"{fmt(row['steiner_boundary'])} / {fmt(row['steiner_interior'])}",
-            f"{fmt(row['axis'])} ({fmt(row['axes_tried'])})", fmt(row["seconds"], ".2f"),
+            f"{fmt(row['direction'])} ({fmt(row['directions_tried'])})", fmt(row["seconds"], ".2f"),
             fmt(row["check_valid"]), fmt(row["volume"], ".6g"),
             fmt(row["volume_difference"], ".1e")]
 
 
 MESH_HEADER = ["N", "top/bot/wall", "M", "degenerate prisms", "tets", "Steiner bnd / int",
-               "axis (tried)", "time s", "check valid", "exact volume", "mesh vol. rel. diff."]
+               "direction (tried)", "time s", "check valid", "exact volume", "mesh vol. rel. diff."]
 
 
 def sweep(out, results, meshes, named):
@@ -165,8 +165,9 @@ def sweep(out, results, meshes, named):
     good = [r for r in meshed if r["check_valid"] and r["valid"] and volume_ok(r)]
     print("`volmesh mesh tet-projection SURFACE.off --json` (axis auto), then `volmesh check` on "
           "the written VTU. N: surface triangles; top/bot/wall: their classes along the axis; "
-          "M: prisms; Steiner points on the boundary / inside; axis (tried): the axis used and "
-          "how many the rounding tried; exact volume: the enclosed volume computed in rationals "
+          "M: prisms; Steiner points on the boundary / inside; direction (tried): the projection "
+          "direction used (an axis, or an axis tilted by a shear) and how many were tried before "
+          "one rounded to doubles; exact volume: the enclosed volume computed in rationals "
           "(its double); mesh vol. rel. diff.: `volmesh check`'s total volume of the written "
           "(rounded) mesh against it. Surfaces the input check refuses (a hole, inconsistent "
           "orientation, crossing or degenerate triangles) are listed apart with its one line.\n")
