@@ -61,6 +61,27 @@ TEST(CliTetProjection, NestedSurfacesGiveTheirRegions) {
   EXPECT_NEAR(v.region_volume.at(1), 0.875, 1e-15);
 }
 
+// A hexagonal prism twisted by 60 degrees has its top corners over its bottom ones up to the
+// rounding of sin and cos: along the axes, some faces come out with no area in doubles, so
+// the mesh is made again along a tilted direction.
+TEST(CliTetProjection, TriesOtherDirectionsWhenRoundingFails) {
+  const fs::path dir = test::scratch_dir("tet-projection-tilt");
+  const fs::path out = dir / "twisted.vtu";
+  const auto r = run_volmesh(
+      "mesh tet-projection builtin:twisted-prism:6:60 --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["rounding"]["directions_tried"].get<int>(), 1);
+  EXPECT_NE(j["direction"].get<std::string>().find("tilted"), std::string::npos);
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
+  const auto fixed = run_volmesh(
+      "mesh tet-projection builtin:twisted-prism:6:60 --axis z -o " + (dir / "z.vtu").string(),
+      dir);
+  EXPECT_EQ(fixed.exit_code, 1);  // with the axis given, no other is tried
+  EXPECT_EQ(test::count_lines(fixed.err), 1) << fixed.err;
+  EXPECT_FALSE(fs::exists(dir / "z.vtu"));
+}
+
 TEST(CliTetProjection, SameBytesForOneAndTwoThreads) {
   const fs::path dir = test::scratch_dir("tet-projection-threads");
   const std::string surface = VOLMESH_CGAL_DATA "/meshes/anchor.off";

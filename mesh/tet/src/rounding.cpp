@@ -7,6 +7,8 @@
 #include <string>
 
 #include "volmesh/core/errors.hpp"
+#include "volmesh/core/geometry.hpp"
+#include "volmesh/core/validity.hpp"
 
 namespace volmesh::tet {
 
@@ -72,6 +74,21 @@ TetMesh round_to_doubles(const ProjectionMesh& exact,
                          "), beyond repair by moving its prism's centre; nothing written");
     ++rounding.repaired_prisms;
   }
+
+  // The checker (validity.hpp) calls a face whose area is rounding noise degenerate; a sliver
+  // prism's side triangles can be, whatever its centre.
+  const double zero_area = ValidityOptions{}.zero_area_tolerance;
+  for (Index t = 0; t < mesh.num_cells(); ++t)
+    for (const auto& face : kTetFaces) {
+      const std::array<Index, 3> loop{mesh.cells[t][face[0]], mesh.cells[t][face[1]],
+                                      mesh.cells[t][face[2]]};
+      const Vec3 &a = mesh.points[loop[0]], &b = mesh.points[loop[1]], &c = mesh.points[loop[2]];
+      if (flatness(mesh.points, loop, 0.5 * (b - a).cross(c - a).norm()) <= zero_area)
+        throw InputError("tet-projection: rounded to doubles, a face of tet " + std::to_string(t) +
+                         " near (" + std::to_string(a.x()) + ", " + std::to_string(a.y()) + ", " +
+                         std::to_string(a.z()) + ") has no area a double can tell from zero; "
+                         "nothing written");
+    }
 
   for (const ProjectionSurface& s : surfaces) mesh.tag_names.push_back(s.name);
   for (std::size_t f = 0; f < exact.boundary_faces.size(); ++f) {

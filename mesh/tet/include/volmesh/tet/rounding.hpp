@@ -4,7 +4,9 @@
 // input points round to themselves; a Steiner point may not, and a thin tet can flatten or
 // turn over. Such a tet's prism centre (its interior Steiner point) is moved to the mean of
 // the rounded corners of the prism's boundary triangles, computed in doubles, when that makes all the prism's tets
-// positive; otherwise the mesh is refused (the caller may project along another direction).
+// positive; otherwise the mesh is refused (the caller may project along another direction),
+// as it is when a face comes out too thin for the validity checker (validity.hpp) to give it
+// an area.
 #include <string>
 #include <vector>
 
