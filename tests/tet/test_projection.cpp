@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
+#include <cmath>
 #include <map>
+#include <numbers>
 
 
 #include "exact_checks.hpp"
@@ -22,6 +24,47 @@ TriSurface box_surface(const Vec3& lo, const Vec3& hi) {
   for (const auto& q : quads) {
     s.triangles.push_back({q[0], q[1], q[2]});
     s.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return s;
+}
+
+// A K-gon of radius 1 at height z, counter-clockwise, and its centre last.
+std::vector<Vec3> polygon(int k, double z) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < k; ++i)
+    p.emplace_back(std::cos(2.0 * std::numbers::pi * i / k), std::sin(2.0 * std::numbers::pi * i / k), z);
+  p.emplace_back(0.0, 0.0, z);
+  return p;
+}
+
+// A K-gon prism of height 1 standing on z = 0: 2K vertical WALL triangles along z.
+TriSurface cylinder(int k) {
+  TriSurface s;
+  s.points = polygon(k, 0.0);
+  const std::vector<Vec3> top = polygon(k, 1.0);
+  s.points.insert(s.points.end(), top.begin(), top.end());
+  const Index c0 = k, c1 = 2 * k + 1, t = k + 1;  // centres, first top vertex
+  for (Index i = 0; i < k; ++i) {
+    const Index j = (i + 1) % k;
+    s.triangles.push_back({c0, j, i});
+    s.triangles.push_back({c1, t + i, t + j});
+    s.triangles.push_back({i, j, t + j});
+    s.triangles.push_back({i, t + j, t + i});
+  }
+  return s;
+}
+
+// The paper's worst case: a cone whose BOT triangles all share the base's centre and whose
+// TOP triangles all share the apex, put off-centre so that the two fans' projections cross.
+TriSurface cone(int k) {
+  TriSurface s;
+  s.points = polygon(k, 0.0);
+  s.points.emplace_back(0.3, 0.2, 1.0);
+  const Index centre = k, apex = k + 1;
+  for (Index i = 0; i < k; ++i) {
+    const Index j = (i + 1) % k;
+    s.triangles.push_back({centre, j, i});
+    s.triangles.push_back({apex, i, j});
   }
   return s;
 }
@@ -115,6 +158,18 @@ TEST(Projection, TwistedPrisms) {
       mesh_of(builtin(name));
     }
   }
+}
+
+TEST(Projection, CylinderWithVerticalWalls) {
+  const ProjectionMesh m = mesh_of({{cylinder(12)}}, {.auto_axis = false, .axis = Axis::z});
+  EXPECT_EQ(m.stats.wall, 24);
+}
+
+// Every TOP edge crosses every BOT edge in projection: M grows as N^2.
+TEST(Projection, PapersWorstCaseCone) {
+  const ProjectionMesh m = mesh_of({{cone(16)}}, {.auto_axis = false, .axis = Axis::z});
+  EXPECT_EQ(m.stats.top, 16);
+  EXPECT_GT(m.stats.prisms, 16 * 16 / 8);
 }
 
 TEST(Projection, SphereHasNoWalls) {
