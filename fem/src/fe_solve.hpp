@@ -12,6 +12,7 @@
 
 #include "fe_assembly.hpp"
 #include "fe_shared.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/fem/linear_solver.hpp"
 
 namespace volmesh::fem::detail {
@@ -117,14 +118,21 @@ struct SolvedField {
 
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
 // fixes the nodes on essential tags (the lowest such tag of a node wins; values taken on
-// the true boundary), solves. report.assembly_seconds counts from `start`. Throws as
-// split_conditions does.
+// the true boundary), solves. report.setup_seconds counts from `start` (the caller's
+// per-cell data). Throws as split_conditions does.
 template <int C, class Condition, class Local>
 SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
                         const std::map<std::string, Condition>& boundary,
                         const PointMap& to_true_boundary, const Local& local,
                         const LinearSolverOptions& options,
-                        std::chrono::steady_clock::time_point start, LinearSolveReport& report) {
+                        Clock::time_point start, LinearSolveReport& report) {
+  Clock::time_point lap = start;
+  const auto stage_seconds = [&lap] {
+    const Clock::time_point now = Clock::now();
+    const double s = std::chrono::duration<double>(now - lap).count();
+    lap = now;
+    return s;
+  };
   const TagConditions<Condition> conditions =
       split_conditions(mesh, boundary);
   volmesh::report(options.progress, "assembly", 0.0);
@@ -132,6 +140,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   out.space = make_space(mesh, space_kind);
   const FeSpace& space = *out.space;
   out.local = [&space, local](Index c, LocalWork& work) { local(space, c, work); };
+  const double space_seconds = stage_seconds();
   GlobalSystem system = assemble_cells(space, C, out.local);
   add_boundary_load(
       mesh, space, C, conditions.natural, to_true_boundary,
@@ -141,6 +150,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
         std::copy(g.data(), g.data() + C, values);
       },
       system.rhs);
+  const double assembly_seconds = stage_seconds();
 
   const Index nn = space.num_nodes();
   const std::vector<Index> essential_tag = lowest_marked_tag(mesh, space, conditions.essential);
@@ -154,10 +164,11 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
       fixed_values.segment<C>(C * Eigen::Index(n)) =
           as_node_vector(value(on_true_boundary(to_true_boundary, space.node_point[n])));
   }
-  report.assembly_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double boundary_seconds = stage_seconds();
   volmesh::report(options.progress, "linear solve", kLinearSolveStart);
   out.u = solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options, report);
+  report.setup_seconds = space_seconds + boundary_seconds;
+  report.assembly_seconds += assembly_seconds;
   return out;
 }
 
