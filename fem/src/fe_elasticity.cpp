@@ -35,8 +35,7 @@ void elasticity_local(const FeSpace& space, Index c, const LameParameters& lame,
   // The P-wave modulus scales the stabilisation like the stiffness of a one-axis strain.
   detail::add_stabilization<3>(s, lame.lambda + 2.0 * lame.mu, work.k);
   if (!body_force) return;
-  space.cell_points(c, Rule::load, work.load);
-  const CellPoints& l = work.load;
+  const CellPoints& l = detail::load_points(space, c, work);
   detail::for_each_point(l, [&](int p, const int* nodes, int count) {
     const Vec3 wb = l.weight[p] * body_force(l.x[p]);
     const double* value = l.value.data() + l.shape_begin[p];

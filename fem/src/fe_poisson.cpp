@@ -26,8 +26,7 @@ void poisson_local(const FeSpace& space, Index c, double conductivity, const Sca
   });
   detail::add_stabilization<1>(s, conductivity, work.k);
   if (!source) return;
-  space.cell_points(c, Rule::load, work.load);
-  const CellPoints& l = work.load;
+  const CellPoints& l = detail::load_points(space, c, work);
   detail::for_each_point(l, [&](int p, const int* nodes, int count) {
     const double wf = l.weight[p] * source(l.x[p]);
     const double* value = l.value.data() + l.shape_begin[p];

@@ -108,11 +108,18 @@ inline const CellPoints& begin_local(const FeSpace& space, Index c, int componen
   return work.stiffness;
 }
 
-// A solved field: its space, the cells' local systems (which recover the condensed internal
+// Cell c's points of the load rule, once begin_local has put its stiffness points in work.
+inline const CellPoints& load_points(const FeSpace& space, Index c, LocalWork& work) {
+  if (space.load_is_stiffness(c)) return work.stiffness;
+  space.cell_points(c, Rule::load, work.load);
+  return work.load;
+}
+
+// A solved field: its space, the cells' internal rows (which recover the condensed internal
 // unknowns) and the nodal unknowns.
 struct SolvedField {
   std::unique_ptr<FeSpace> space;
-  LocalSystem local;
+  InternalRows internal_rows;
   Eigen::VectorXd u;
 };
 
@@ -139,9 +146,10 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   SolvedField out;
   out.space = make_space(mesh, space_kind);
   const FeSpace& space = *out.space;
-  out.local = [&space, local](Index c, LocalWork& work) { local(space, c, work); };
   const double space_seconds = stage_seconds();
-  GlobalSystem system = assemble_cells(space, C, out.local);
+  GlobalSystem system = assemble_cells(
+      space, C, [&space, &local](Index c, LocalWork& work) { local(space, c, work); },
+      &out.internal_rows);
   add_boundary_load(
       mesh, space, C, conditions.natural, to_true_boundary,
       [&](Index tag, const Vec3& at, double* values) {
@@ -197,7 +205,7 @@ std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, con
   std::vector<CellResult> out(field.space->num_cells());
   for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
     Eigen::VectorXd local_u;
-    cell_unknowns(*field.space, C, field.local, c, field.u, work, local_u);
+    cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
     field.space->cell_points(c, rule, work.load);
     const CellPoints& q = work.load;
     CellResult& r = out[c];
