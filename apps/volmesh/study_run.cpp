@@ -184,8 +184,12 @@ nlohmann::json study_summary(const StudyOutcome& outcome) {
                         {"residual", r.solve.residual},
                         {"seconds",
                          {{"mesh", r.mesh_seconds},
+                          {"setup", r.solve.setup_seconds},
                           {"assembly", r.solve.assembly_seconds},
-                          {"solve", r.solve.solve_seconds}}}});
+                          {"preconditioner", r.solve.preconditioner_seconds},
+                          {"solve", r.solve.solve_seconds},
+                          {"errors", r.solve.errors_seconds},
+                          {"total", r.seconds}}}});
     for (std::size_t k = 0; k < fem::kNorms.size(); ++k) {
       const std::string name = fem::norm_name(fem::kNorms[k]);
       slopes[name] = finite_or_null(rates.slope[k]);

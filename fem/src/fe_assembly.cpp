@@ -126,7 +126,7 @@ void condense(Eigen::MatrixXd& k, Eigen::VectorXd& f, int internal) {
   f.head(outer).noalias() -= k.topRightCorner(outer, internal) * y;
 }
 
-void cell_unknowns(const FeSpace& space, int components, const LocalSystem& local, Index c,
+void cell_unknowns(const FeSpace& space, int components, const InternalRows& rows, Index c,
                    const Eigen::VectorXd& global, LocalWork& work, Eigen::VectorXd& out) {
   const auto nodes = space.cell_nodes(c);
   const Eigen::Index outer = static_cast<Eigen::Index>(nodes.size()) * components;
@@ -136,7 +136,13 @@ void cell_unknowns(const FeSpace& space, int components, const LocalSystem& loca
     for (int i = 0; i < components; ++i)
       out[a * components + i] = global[std::int64_t(nodes[a]) * components + i];
   if (internal == 0) return;
-  local(c, work);
+  // k and f as the cell's local system left them in the rows read below.
+  const Eigen::Index n = outer + internal;
+  const double* kept = rows.values.data() + rows.offset[c];
+  work.k.resize(n, n);
+  work.k.bottomRows(internal) = Eigen::Map<const Eigen::MatrixXd>(kept, internal, n);
+  work.f.resize(n);
+  work.f.tail(internal) = Eigen::Map<const Eigen::VectorXd>(kept + internal * n, internal);
   const Eigen::VectorXd rhs =
       work.f.tail(internal) - work.k.bottomLeftCorner(internal, outer) * out.head(outer);
   out.tail(internal) = work.k.bottomRightCorner(internal, internal).llt().solve(rhs);
@@ -151,7 +157,8 @@ void for_each_cell(Index begin, Index end,
   });
 }
 
-GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local) {
+GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local,
+                            InternalRows* internal_rows) {
   const Index nn = space.num_nodes();
   const Index nc = space.num_cells();
   if (std::int64_t(nn) * components > kMaxIndex)
@@ -168,6 +175,13 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
   const auto size_of = [&](Index c) {
     return std::size_t(space.cell_nodes(c).size()) * components;
   };
+  InternalRows* const keep = internal > 0 ? internal_rows : nullptr;
+  if (keep) {
+    keep->offset.assign(1, 0);
+    for (Index c = 0; c < nc; ++c)
+      keep->offset.push_back(keep->offset.back() + internal * (size_of(c) + internal + 1));
+    keep->values.resize(keep->offset.back());
+  }
   // Column ranges, one per thread: each column is summed by one thread in cell order.
   const int ranges = std::max(1, tbb::this_task_arena::max_concurrency());
   std::vector<std::size_t> offset, f_offset;  // per cell of the batch, into k_batch, f_batch
@@ -187,6 +201,12 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
 
     for_each_cell(begin, end, [&](Index c, LocalWork& work) {
       local(c, work);
+      if (keep) {
+        const Eigen::Index n = work.k.rows();
+        double* rows = keep->values.data() + keep->offset[c];
+        Eigen::Map<Eigen::MatrixXd>(rows, internal, n) = work.k.bottomRows(internal);
+        Eigen::Map<Eigen::VectorXd>(rows + internal * n, internal) = work.f.tail(internal);
+      }
       condense(work.k, work.f, internal);
       const Eigen::Index m = static_cast<Eigen::Index>(size_of(c));
       Eigen::Map<Eigen::MatrixXd>(k_batch.data() + offset[c - begin], m, m) =

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <vector>
 
 #include "fe_space.hpp"
 
@@ -26,15 +27,26 @@ struct GlobalSystem {
   Eigen::VectorXd rhs;
 };
 
-GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local);
+// What recovers a cell's condensed internal unknowns from its outer ones: the internal rows
+// of its local system (k's last rows over all the cell's unknowns, then f's last entries),
+// kept by the assembly so that no local system is computed twice.
+struct InternalRows {
+  std::vector<std::size_t> offset;  // per cell into values, then the end
+  std::vector<double> values;
+};
+
+// `internal_rows`, when given, receives the internal rows (none for a space without
+// internal nodes).
+GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local,
+                            InternalRows* internal_rows = nullptr);
 
 // Static condensation of the trailing `internal` unknowns: afterwards the leading block of
 // (k, f) is the condensed system of the others.
 void condense(Eigen::MatrixXd& k, Eigen::VectorXd& f, int internal);
 
 // Cell c's unknowns over its outer then internal nodes: the outer ones from the global
-// solution, the internal ones recovered from the local system.
-void cell_unknowns(const FeSpace& space, int components, const LocalSystem& local, Index c,
+// solution, the internal ones recovered from the internal rows the assembly kept.
+void cell_unknowns(const FeSpace& space, int components, const InternalRows& rows, Index c,
                    const Eigen::VectorXd& global, LocalWork& work, Eigen::VectorXd& out);
 
 // Calls fn(c, work) for the cells c in [begin, end), in parallel, each thread with its own work.

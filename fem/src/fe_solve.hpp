@@ -12,6 +12,7 @@
 
 #include "fe_assembly.hpp"
 #include "fe_shared.hpp"
+#include "volmesh/core/stopwatch.hpp"
 #include "volmesh/fem/linear_solver.hpp"
 
 namespace volmesh::fem::detail {
@@ -107,32 +108,48 @@ inline const CellPoints& begin_local(const FeSpace& space, Index c, int componen
   return work.stiffness;
 }
 
-// A solved field: its space, the cells' local systems (which recover the condensed internal
+// Cell c's points of the load rule, once begin_local has put its stiffness points in work.
+inline const CellPoints& load_points(const FeSpace& space, Index c, LocalWork& work) {
+  if (space.load_is_stiffness(c)) return work.stiffness;
+  space.cell_points(c, Rule::load, work.load);
+  return work.load;
+}
+
+// A solved field: its space, the cells' internal rows (which recover the condensed internal
 // unknowns) and the nodal unknowns.
 struct SolvedField {
   std::unique_ptr<FeSpace> space;
-  LocalSystem local;
+  InternalRows internal_rows;
   Eigen::VectorXd u;
 };
 
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
 // fixes the nodes on essential tags (the lowest such tag of a node wins; values taken on
-// the true boundary), solves. report.assembly_seconds counts from `start`. Throws as
-// split_conditions does.
+// the true boundary), solves. report.setup_seconds counts from `start` (the caller's
+// per-cell data). Throws as split_conditions does.
 template <int C, class Condition, class Local>
 SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
                         const std::map<std::string, Condition>& boundary,
                         const PointMap& to_true_boundary, const Local& local,
                         const LinearSolverOptions& options,
-                        std::chrono::steady_clock::time_point start, LinearSolveReport& report) {
+                        Clock::time_point start, LinearSolveReport& report) {
+  Clock::time_point lap = start;
+  const auto stage_seconds = [&lap] {
+    const Clock::time_point now = Clock::now();
+    const double s = std::chrono::duration<double>(now - lap).count();
+    lap = now;
+    return s;
+  };
   const TagConditions<Condition> conditions =
       split_conditions(mesh, boundary);
   volmesh::report(options.progress, "assembly", 0.0);
   SolvedField out;
   out.space = make_space(mesh, space_kind);
   const FeSpace& space = *out.space;
-  out.local = [&space, local](Index c, LocalWork& work) { local(space, c, work); };
-  GlobalSystem system = assemble_cells(space, C, out.local);
+  const double space_seconds = stage_seconds();
+  GlobalSystem system = assemble_cells(
+      space, C, [&space, &local](Index c, LocalWork& work) { local(space, c, work); },
+      &out.internal_rows);
   add_boundary_load(
       mesh, space, C, conditions.natural, to_true_boundary,
       [&](Index tag, const Vec3& at, double* values) {
@@ -141,6 +158,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
         std::copy(g.data(), g.data() + C, values);
       },
       system.rhs);
+  const double assembly_seconds = stage_seconds();
 
   const Index nn = space.num_nodes();
   const std::vector<Index> essential_tag = lowest_marked_tag(mesh, space, conditions.essential);
@@ -154,10 +172,11 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
       fixed_values.segment<C>(C * Eigen::Index(n)) =
           as_node_vector(value(on_true_boundary(to_true_boundary, space.node_point[n])));
   }
-  report.assembly_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double boundary_seconds = stage_seconds();
   volmesh::report(options.progress, "linear solve", kLinearSolveStart);
   out.u = solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options, report);
+  report.setup_seconds = space_seconds + boundary_seconds;
+  report.assembly_seconds += assembly_seconds;
   return out;
 }
 
@@ -186,7 +205,7 @@ std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, con
   std::vector<CellResult> out(field.space->num_cells());
   for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
     Eigen::VectorXd local_u;
-    cell_unknowns(*field.space, C, field.local, c, field.u, work, local_u);
+    cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
     field.space->cell_points(c, rule, work.load);
     const CellPoints& q = work.load;
     CellResult& r = out[c];

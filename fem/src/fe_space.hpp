@@ -82,6 +82,8 @@ class FeSpace {
   // Nodes of each cell beyond cell_nodes (condensed statically): the same for every cell.
   virtual int internal_nodes() const { return 0; }
   virtual void cell_points(Index c, Rule rule, CellPoints& out) const = 0;
+  // Whether cell c's load points are its stiffness points, so that one computation serves both.
+  virtual bool load_is_stiffness(Index) const { return false; }
   // The nodes of boundary face f.
   virtual void face_nodes(Index f, std::vector<Index>& out) const = 0;
   virtual void face_points(Index f, FacePoints& out) const = 0;

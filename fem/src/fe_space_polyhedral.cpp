@@ -85,6 +85,9 @@ class PolyhedralSpace final : public FeSpace {
 
   int internal_nodes() const override { return 1; }
 
+  // A sub-tessellated cell takes the same one-point rule for both (cell_points).
+  bool load_is_stiffness(Index c) const override { return virtual_of_[c] == kNoIndex; }
+
   void cell_points(Index c, Rule rule, CellPoints& out) const override {
     out.clear();
     if (virtual_of_[c] != kNoIndex) return virtual_points(virtual_[virtual_of_[c]], c, rule, out);

@@ -34,6 +34,7 @@ ConvergenceSeries run_convergence_study(const std::string& label, int first_leve
     r.dofs = s.dofs;
     r.solve = s.solve;
     r.errors = *s.errors;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     series.levels.push_back(r);
   }
   return series;

@@ -9,6 +9,7 @@
 
 #include "meshio_fields.hpp"
 #include "run_volmesh.hpp"
+#include "stage_seconds.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/structured.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -147,6 +148,30 @@ void expect_refused(const std::string& args, const std::string& what, const fs::
   EXPECT_EQ(test::count_lines(r.err), 1) << args << "\n" << r.err;
   EXPECT_NE(r.err.find(what), std::string::npos) << args << "\n" << r.err;
   EXPECT_FALSE(fs::exists(out)) << args;
+}
+
+// Every stage of a solve has its time in --json, and they add up to the total: meshed by a
+// method (no check), read from a file (checked), finite volumes, elasticity.
+TEST(CliSolve, StageSecondsAddUpToTheTotal) {
+  const fs::path dir = test::scratch_dir("solve-seconds");
+  const std::vector<std::string> stages{"mesh",  "check",  "setup", "assembly", "preconditioner",
+                                        "solve", "errors", "write"};
+  const fs::path mesh = dir / "ball.vtu";
+  ASSERT_EQ(run_volmesh("mesh cutcell builtin:ball --level 3 -o " + mesh.string(), dir).exit_code,
+            0);
+  for (const std::string& args :
+       {std::string("solve poisson --problem sine --method cutcell --domain builtin:ball --level 4"),
+        "solve poisson --problem sine --mesh " + mesh.string(),
+        "solve poisson --problem sine --mesh " + mesh.string() + " --space fv",
+        std::string("solve elasticity --problem elastic-patch --method grid --level 3")}) {
+    const auto r = run_volmesh(args + " -o " + (dir / "u.vtu").string() + " --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    const auto seconds = nlohmann::json::parse(r.out)["seconds"];
+    SCOPED_TRACE(args);
+    test::expect_stages_add_up(seconds, stages);
+    // Only a mesh read from a file is checked.
+    EXPECT_EQ(seconds["check"].get<double>() > 0.0, args.find("--mesh") != std::string::npos);
+  }
 }
 
 TEST(CliSolve, BadInputsGiveOneLineAndNoOutput) {

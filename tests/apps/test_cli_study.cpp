@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "run_volmesh.hpp"
+#include "stage_seconds.hpp"
 
 namespace volmesh {
 namespace {
@@ -78,6 +79,9 @@ TEST(CliStudy, GridP1StudyWritesConsistentCsvPngAndJson) {
   ASSERT_EQ(again.exit_code, 0) << again.err;
   const auto j = nlohmann::json::parse(again.out);
   EXPECT_EQ(j["series"][0]["slope"], series["slope"]);
+  for (const auto& level : j["series"][0]["levels"])
+    test::expect_stages_add_up(level["seconds"], {"mesh", "setup", "assembly", "preconditioner",
+                                                  "solve", "errors"});
   EXPECT_EQ(test::slurp(dir / "again" / "convergence.csv"), test::slurp(out / "convergence.csv"));
   EXPECT_EQ(test::slurp(dir / "again" / "convergence.png"), png);
 }

@@ -56,7 +56,7 @@ const char* space_name(Space space);  // "p1", "p2", "q1", "polyhedral"
 std::optional<Space> space_from_name(std::string_view name);
 
 // cell_values: the mean of u_h over each cell. point_values: u_h at each mesh point (NaN at a
-// point no cell uses). solve.assembly_seconds: everything before the linear solve.
+// point no cell uses). solve: the stage times (setup, assembly, ... errors) add up to the run.
 ScalarSolution solve_poisson(const PolyMesh& mesh, const PoissonProblem& problem, Space space,
                              const LinearSolverOptions& options = {});
 

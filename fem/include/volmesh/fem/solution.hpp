@@ -17,8 +17,12 @@ struct LinearSolveReport {
   int iterations = 0;       // 0 for a direct solve
   double residual = 0.0;    // ‖b − Ax‖ / ‖b‖ at exit
   Index unknowns = 0;       // after eliminating Dirichlet values
-  double assembly_seconds = 0.0;
-  double solve_seconds = 0.0;
+  // Wall time of each stage of the solve; together they make up the whole of it.
+  double setup_seconds = 0.0;           // the space, per-cell data, boundary conditions, Dirichlet values
+  double assembly_seconds = 0.0;        // the global system, its natural loads, the elimination
+  double preconditioner_seconds = 0.0;  // the incomplete Cholesky or LDLᵀ factorisation
+  double solve_seconds = 0.0;           // the iterations (or triangular solves), the residual
+  double errors_seconds = 0.0;          // the solution's values per point and cell, the error norms
 };
 
 struct ErrorNorms {

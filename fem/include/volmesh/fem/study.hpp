@@ -37,8 +37,9 @@ struct LevelResult {
   Index cells = 0;
   Index dofs = 0;
   ErrorNorms errors;
-  LinearSolveReport solve;
+  LinearSolveReport solve;  // with the solve's stage times
   double mesh_seconds = 0.0;
+  double seconds = 0.0;  // the level's whole run: the mesh, then the solve's stages
 };
 
 struct ConvergenceSeries {
