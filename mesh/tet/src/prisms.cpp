@@ -46,8 +46,6 @@ void build_prisms(State& state) {
   std::vector<Index> entered;
   for (std::size_t f = 0; f < state.faces.size(); ++f) {
     const FaceHandle face = state.faces[f];
-    const Point2 q = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(),
-                                    face->vertex(2)->point());
     Rational x = 0, y = 0;
     for (int k = 0; k < 3; ++k) {
       x += state.xy[face->vertex(k)->info()][0];
@@ -55,6 +53,7 @@ void build_prisms(State& state) {
     }
     x /= 3;
     y /= 3;
+    const Point2 q{K::FT(x), K::FT(y)};  // the same centroid, for the exact predicates
     over.clear();
     for (const Index item : cache.near(x.get_d(), y.get_d())) {
       const Index t = sloped[item];
