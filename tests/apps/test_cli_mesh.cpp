@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "cell_shapes.hpp"
 #include "run_volmesh.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
@@ -146,9 +147,7 @@ TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
   // writes polyhedra's face arrays otherwise.
   EXPECT_EQ(test::slurp(out).find("faceoffsets"), std::string::npos);
   const PolyMesh mesh = read_mesh(out);
-  const CellFaces cell_faces = build_cell_faces(mesh);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    ASSERT_EQ(classify_cell(mesh, cell_faces, c).shape, CellShape::Hexahedron) << c;
+  test::expect_every_cell(mesh, CellShape::Hexahedron);
   const ValidityReport v = check_validity(mesh);
   EXPECT_TRUE(v.valid());
   EXPECT_EQ(j["cells"], mesh.num_cells());

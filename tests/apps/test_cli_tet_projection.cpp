@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/shell.hpp"
+#include "cell_shapes.hpp"
 #include "run_volmesh.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
@@ -38,9 +39,7 @@ TEST(CliTetProjection, MeshesACubeExactlyAndReportsItsFigures) {
   for (const char* stage : {"check", "classify", "project", "prisms", "stitch", "fill", "round"})
     EXPECT_TRUE(j["stage_seconds"][stage].is_number()) << stage;
   const PolyMesh mesh = read_mesh(out);
-  const CellFaces cell_faces = build_cell_faces(mesh);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    ASSERT_EQ(classify_cell(mesh, cell_faces, c).shape, CellShape::Tetrahedron) << c;
+  test::expect_every_cell(mesh, CellShape::Tetrahedron);
   const ValidityReport v = check_validity(mesh);
   EXPECT_TRUE(v.valid());
   EXPECT_DOUBLE_EQ(v.total_volume, 0.125);
