@@ -98,8 +98,9 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   require_no_intersections(surfaces, request.domain_name);
   const double check_seconds = seconds_since(clock);
   // A prism too thin for doubles along one direction is not along another: with the axis
-  // left to the method, a mesh that rounding cannot keep positive is made again along the
-  // other axes, then along tilted directions.
+  // left to the method, a mesh that rounding cannot keep positive is made again along a
+  // tilted direction first (rounding fails mostly where a symmetric model's points and edges
+  // meet in projection along every axis), then along the other axes and the other tilts.
   const tet::ProjectionOptions asked = projection_options(request.options);
   std::vector<tet::ProjectionOptions> attempts{asked};
   tet::ProjectionMesh exact;
@@ -110,9 +111,10 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
     exact = tet::tetrahedralize_by_projection(surfaces, attempts[attempt],
                                               part_of(request.progress, 0.05, 0.9));
     if (attempt == 0 && asked.auto_axis) {
+      attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = 1});
       for (const tet::Axis a : {tet::Axis::z, tet::Axis::x, tet::Axis::y})
         if (a != exact.stats.axis) attempts.push_back({.auto_axis = false, .axis = a});
-      for (int tilt = 1; tilt <= tet::kTilts; ++tilt)
+      for (int tilt = 2; tilt <= tet::kTilts; ++tilt)
         attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = tilt});
     }
     clock = Clock::now();
