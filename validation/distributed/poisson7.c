@@ -1,9 +1,9 @@
 /* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
  * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
- * interior unknowns (DMDA, one block of planes per rank), CG + BoomerAMG with volmesh's
- * defaults (HMIS, ext+i, P_max 4, strong threshold 0.5, aggressive coarsening on the finest
- * level), relative residual 1e-8. Prints one JSON line: unknowns, ranks, iterations and the
- * set-up (matrix), preconditioner and solve seconds. Usage: poisson7 -n N [PETSc options]. */
+ * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (HMIS,
+ * ext+i, P_max 4, strong threshold 0.5), relative residual 1e-8. Prints one JSON line:
+ * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
+ * Usage: poisson7 -n N [PETSc options]. */
 #include <petscdmda.h>
 #include <petscksp.h>
 
@@ -66,8 +66,7 @@ int main(int argc, char** argv) {
   PetscCall(PCHYPRESetType(pc, "boomeramg"));
   PetscCall(PetscOptionsInsertString(NULL,
       "-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_interp_type ext+i "
-      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.5 "
-      "-pc_hypre_boomeramg_agg_nl 1"));
+      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.5"));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
   PetscCall(PCSetUp(pc));
