@@ -7,9 +7,11 @@ JOBS ?= $(shell nproc)
 
 BUILD_PACKAGES := cmake ninja-build g++ ccache pkg-config libeigen3-dev libcgal-dev libgmp-dev \
   libmpfr-dev libvtk9-dev libmetis-dev libgtest-dev libcli11-dev nlohmann-json3-dev \
-  libtbb-dev zlib1g-dev libmuparser-dev libgd-dev
-# Third-party readers the round-trip tests check our output with, and the test surfaces.
-TEST_PACKAGES := python3 python3-meshio gmsh openfoam libcgal-demo
+  libtbb-dev zlib1g-dev libmuparser-dev libgd-dev petsc-dev libhypre-dev openmpi-bin \
+  libopenmpi-dev
+# Third-party readers the round-trip tests check our output with (VTK's parallel reader for
+# the distributed solve's PVTU), and the test surfaces.
+TEST_PACKAGES := python3 python3-meshio python3-vtk9 gmsh openfoam libcgal-demo
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 missing = $(shell for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done)

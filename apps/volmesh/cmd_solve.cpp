@@ -1,12 +1,14 @@
-// volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X --domain D --level N)
-//   [--space S] [--exact EXPR --source EXPR --k K] -o out.vtu [--json] [--quiet]
-// One solve, written as a VTU with the solution, its error where an exact solution is known,
-// and the regions.
+// [mpirun -np P] volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X
+//   --domain D --level N) [--space S] [--exact EXPR --source EXPR --k K] [--solver B]
+//   -o out.vtu|out.pvtu [--json] [--quiet] [PETSc options]
+// One solve, written as a VTU (or a PVTU, one piece per rank) with the solution, its error
+// where an exact solution is known, and the regions. Under mpirun: distributed.hpp.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
 #include "solve_setup.hpp"
@@ -27,6 +29,7 @@ struct SolveOptions {
   meshers::MethodOptions given;
   bool json = false, quiet = false;
   ProblemSpec problem;
+  SolverBackend solver = SolverBackend::automatic;
 };
 
 // The share of the progress bar that reading or meshing takes; the solve and the writing
@@ -52,18 +55,27 @@ struct Input {
   double check_seconds = 0.0;  // of a mesh read from a file
 };
 
+// Rank 0 reads or meshes (distributed.hpp); every rank opens the domain.
 Input read_input(const SolveOptions& opt, const Progress& progress) {
   Input in;
+  std::vector<double> numbers{0.0, 0.0};  // h, check seconds
   if (!opt.mesh.empty()) {
-    report(progress, "reading " + opt.mesh, 0.0);
-    in.mesh = read_mesh(opt.mesh);
-    const Clock::time_point checking = Clock::now();
-    const ValidityReport r = check_validity(in.mesh);
-    in.check_seconds = seconds_since(checking);
-    if (!r.valid())
-      throw InputError(opt.mesh + ": invalid mesh, not solved (" +
-                       (r.problems.empty() ? std::string("see volmesh check") : r.problems.front()) +
-                       ")");
+    in.mesh = mesh_on_rank_zero(
+        [&] {
+          report(progress, "reading " + opt.mesh, 0.0);
+          PolyMesh mesh = read_mesh(opt.mesh);
+          const Clock::time_point checking = Clock::now();
+          const ValidityReport r = check_validity(mesh);
+          numbers[1] = seconds_since(checking);
+          if (!r.valid())
+            throw InputError(opt.mesh + ": invalid mesh, not solved (" +
+                             (r.problems.empty() ? std::string("see volmesh check")
+                                                 : r.problems.front()) +
+                             ")");
+          return mesh;
+        },
+        &numbers);
+    in.check_seconds = numbers[1];
     in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
     in.domain_name = opt.domain.empty() ? opt.mesh : domain_display_name(opt.domain);
     in.own_boundary = opt.domain.empty();
@@ -71,19 +83,35 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   }
   const meshers::MesherInfo& method = meshers::find_mesher(opt.method);
   const std::string spec = opt.domain.empty() ? method.default_domain : opt.domain;
-  in.domain = open_domain(spec);
   in.domain_name = domain_display_name(spec);
-  meshers::MeshRequest request;
-  request.domain_name = in.domain_name;
-  if (opt.level >= 0) request.level = opt.level;
-  request.uniform = true;
-  request.options = opt.given;
-  request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
-  meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
-  in.mesh = std::move(m.mesh);
-  in.h = m.h;
   in.default_space = method.default_space;
+  in.mesh = mesh_on_rank_zero(
+      [&] {
+        in.domain = open_domain(spec);
+        meshers::MeshRequest request;
+        request.domain_name = in.domain_name;
+        if (opt.level >= 0) request.level = opt.level;
+        request.uniform = true;
+        request.options = opt.given;
+        request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
+        meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
+        numbers[0] = m.h;
+        return std::move(m.mesh);
+      },
+      &numbers);
+  in.h = numbers[0];
+  if (!in.domain) in.domain = open_domain(spec);
   return in;
+}
+
+// The stage seconds of a run; in a distributed run rank 0's (which add up to its total) and
+// the largest over the ranks.
+nlohmann::json seconds_json(const std::vector<std::pair<const char*, double>>& stages,
+                            double total) {
+  nlohmann::json out;
+  for (const auto& [name, s] : stages) out[name] = s;
+  out["total"] = total;
+  return out;
 }
 
 int run_solve(const SolveOptions& opt) {
@@ -103,10 +131,20 @@ int run_solve(const SolveOptions& opt) {
   }
   if (!opt.method.empty() && !options_apply("solve", meshers::find_mesher(opt.method), opt.given))
     return 2;
-  ProgressLine progress_line("solve", opt.quiet);
+  const bool distributed = fem::distributed_run();
+  if (distributed && opt.solver == SolverBackend::eigen)
+    throw InputError("--solver eigen runs on one process: run without mpirun, or with the PETSc solver");
+  if (distributed && opt.space == "fv")
+    throw InputError("--space fv: finite volumes run on one process: run without mpirun");
+  const bool rank_zero = fem::rank() == 0;
+  ProgressLine progress_line("solve", opt.quiet || !rank_zero);
   const Progress progress = progress_line.progress();
   const Input in = read_input(opt, part_of(progress, 0.0, kMeshShare));
   const double mesh_seconds = seconds_since(start) - in.check_seconds;
+  const Clock::time_point partitioning = Clock::now();
+  const std::vector<Index> cell_rank = distributed ? partition_for_ranks(in.mesh) : std::vector<Index>{};
+  const double partition_seconds = seconds_since(partitioning);
+  const Solver solver{opt.solver, distributed ? &cell_rank : nullptr};
   const Clock::time_point setting_up = Clock::now();
   const SpaceChoice space = choose_space(opt.space, in.default_space, in.mesh);
   const Progress solving = part_of(progress, kMeshShare, kWriteStart,
@@ -127,7 +165,7 @@ int run_solve(const SolveOptions& opt) {
       fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
       if (in.own_boundary) problem.to_true_boundary = nullptr;
       problem_seconds = seconds_since(setting_up);
-      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving);
+      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving, solver);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       const Clock::time_point evaluating = Clock::now();
       fields = vector_fields(in.mesh, s, problem);
@@ -135,12 +173,12 @@ int run_solve(const SolveOptions& opt) {
     } else {
       fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
       if (in.own_boundary) problem.to_true_boundary = nullptr;
-      if (!warning.empty()) {
+      if (!warning.empty() && rank_zero) {
         progress_line.clear();
         std::cerr << "warning: " << warning << "\n";
       }
       problem_seconds = seconds_since(setting_up);
-      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving);
+      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving, solver);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       const Clock::time_point evaluating = Clock::now();
       fields = scalar_fields(in.mesh, s, problem);
@@ -152,9 +190,24 @@ int run_solve(const SolveOptions& opt) {
   }
   const Clock::time_point writing = Clock::now();
   progress_line("writing " + opt.output, kWriteStart);
-  write_mesh(in.mesh, opt.output, fields);
+  write_solution(in.mesh, fields, cell_rank, opt.output);
   const double write_seconds = seconds_since(writing);
   progress_line.clear();
+  const std::vector<std::pair<const char*, double>> stages{
+      {"mesh", mesh_seconds},
+      {"check", in.check_seconds},
+      {"partition", partition_seconds},
+      {"setup", problem_seconds + report.setup_seconds},
+      {"assembly", report.assembly_seconds},
+      {"preconditioner", report.preconditioner_seconds},
+      {"solve", report.solve_seconds},
+      {"errors", report.errors_seconds + fields_seconds},
+      {"write", write_seconds}};
+  const double total = seconds_since(start);
+  std::vector<std::pair<const char*, double>> stages_max = stages;
+  for (auto& [name, s] : stages_max) s = fem::max_over_ranks(s);
+  const double total_max = fem::max_over_ranks(total);
+  if (!rank_zero) return 0;
 
   if (opt.json) {
     nlohmann::json j{{"problem", opt.problem.label()},
@@ -170,16 +223,11 @@ int run_solve(const SolveOptions& opt) {
                      {"iterations", report.iterations},
                      {"residual", report.residual},
                      {"errors", errors_json(errors)},
-                     {"seconds",
-                      {{"mesh", mesh_seconds},
-                       {"check", in.check_seconds},
-                       {"setup", problem_seconds + report.setup_seconds},
-                       {"assembly", report.assembly_seconds},
-                       {"preconditioner", report.preconditioner_seconds},
-                       {"solve", report.solve_seconds},
-                       {"errors", report.errors_seconds + fields_seconds},
-                       {"write", write_seconds},
-                       {"total", seconds_since(start)}}}};
+                     {"seconds", seconds_json(stages, total)}};
+    if (distributed) {
+      j["ranks"] = fem::ranks();
+      j["seconds_max"] = seconds_json(stages_max, total_max);
+    }
     if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
     if (opt.level >= 0) j["level"] = opt.level;
     if (!warning.empty()) j["warning"] = warning;
@@ -189,7 +237,7 @@ int run_solve(const SolveOptions& opt) {
   std::cout << opt.output << ": " << opt.problem.label() << " on " << in.domain_name << ", "
             << in.mesh.num_cells() << " cells, " << dofs << " DOFs (" << space.name() << "); "
             << report.method << ", " << report.iterations << " iterations, residual "
-            << report.residual << "; " << seconds_since(start) << " s\n";
+            << report.residual << "; " << total << " s\n";
   if (errors)
     std::cout << "errors: L2 " << errors->l2 << ", Linf " << errors->linf << ", H1 " << errors->h1
               << "\n";
@@ -237,14 +285,16 @@ Command add_solve_command(CLI::App& root) {
   app->add_option("--space", opt->space,
                   "p1, p2, q1, polyhedral, or fv (default: polyhedral for octree methods, p1 "
                   "for tets, q1 for hexes)");
-  app->add_option("-o,--output", opt->output, "output mesh with the solution (.vtu)")
+  app->add_option("-o,--output", opt->output,
+                  "output mesh with the solution (.vtu, or .pvtu: one piece per rank)")
       ->required()
       ->check(CLI::Validator(
           [](std::string& s) {
-            return std::filesystem::path(s).extension() == ".vtu" ? std::string()
-                                                                  : "must end in .vtu";
+            const auto ext = std::filesystem::path(s).extension();
+            return ext == ".vtu" || ext == ".pvtu" ? std::string() : "must end in .vtu or .pvtu";
           },
-          "FILE.vtu"));
+          "FILE.vtu|FILE.pvtu"));
+  add_solver_option(*app, opt->solver);
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);

@@ -1,11 +1,13 @@
 // volmesh study convergence --problem P (--method M | --methods a,b) --levels A..B
-//   [--space S] [--domain D] [method options, e.g. --tets] -o dir [--json] [--quiet]
+//   [--space S] [--domain D] [method options, e.g. --tets] [--solver B] [--np P] -o dir
+//   [--json] [--quiet]
 // Meshes and solves each level, prints the table with pairwise rates and least-squares
 // slopes, and writes dir/convergence.csv, dir/convergence.png and dir/summary.json.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "commands.hpp"
+#include "distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
 #include "study_run.hpp"
@@ -19,15 +21,19 @@ struct StudyOptions {
   StudySpec spec;
   std::string levels, output;
   bool json = false, quiet = false;
+  int np = 0;  // > 0: re-launch under mpirun with this many ranks
 };
 
 int run_study_command(StudyOptions opt) {
+  if (opt.np > 0 && !fem::distributed_run()) return relaunch_under_mpirun(opt.np);
   for (const std::string& method : opt.spec.methods)
     if (!options_apply("study convergence", meshers::find_mesher(method), opt.spec.options))
       return 2;
   std::tie(opt.spec.first_level, opt.spec.last_level) = parse_levels(opt.levels);
-  ProgressLine progress("study", opt.quiet);
+  const bool rank_zero = fem::rank() == 0;
+  ProgressLine progress("study", opt.quiet || !rank_zero);
   const StudyOutcome outcome = run_study(opt.spec, progress.progress());
+  if (!rank_zero) return 0;
   progress("writing " + opt.output, 1.0);
   write_study_outputs(opt.output, outcome);
   progress.clear();
@@ -83,6 +89,10 @@ Command add_study_command(CLI::App& root) {
                   "tets, q1 for hexes)");
   add_mesher_options(*app, opt->spec.options, false);
   app->add_option("-o,--output", opt->output, "output directory")->required();
+  add_solver_option(*app, opt->spec.solver);
+  app->add_option("--np", opt->np,
+                  "solve every level on P ranks: runs itself again under mpirun -np P")
+      ->check(CLI::PositiveNumber);
   app->add_flag("--json", opt->json, "print the summary as one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   app->footer(

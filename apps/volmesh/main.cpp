@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "distributed.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/fem/parallel.hpp"
 #include "volmesh/meshers/registry.hpp"
 
 #ifdef __GLIBC__
@@ -37,9 +39,18 @@ void keep_freed_memory() {
 int main(int argc, char** argv) {
   using namespace volmesh;
   keep_freed_memory();
+  // Takes PETSc's options off the command line before CLI11 sees it; PETSc stops when it ends.
+  fem::Session session(argc, argv);
+  if (!fem::petsc_built() && !fem::petsc_arguments().empty()) {
+    std::cerr << "volmesh: error: " << fem::petsc_arguments().front()
+              << " is a PETSc option, and this volmesh was built without PETSc\n";
+    return 2;
+  }
+  cli::remember_command_line(argc, argv);
   CLI::App app{"volmesh — volume meshing (" + meshers::mesher_names() +
                "), checking, partitioning, Poisson and elasticity solves, export"};
-  app.set_version_flag("--version", std::string("volmesh ") + VOLMESH_VERSION);
+  app.set_version_flag("--version",
+                       std::string("volmesh ") + VOLMESH_VERSION + "\n" + fem::backend_summary());
   app.require_subcommand(1);
   std::vector<cli::Command> commands{
       cli::add_info_command(app),      cli::add_convert_command(app), cli::add_check_command(app),
@@ -65,14 +76,12 @@ Each subcommand's --help has its own examples.)");
   try {
     for (auto& c : commands)
       if (c.app->parsed()) return c.run();
-  } catch (const InputError& e) {
-    std::cerr << "volmesh: error: " << e.what() << "\n";
-    return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "volmesh: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "volmesh: error: " << e.what() << "\n";
+    // A distributed run's ranks fail together (fem::agree); rank 0 speaks for them.
+    if (fem::rank() == 0) std::cerr << "volmesh: error: " << e.what() << "\n";
     return 1;
   }
   return 2;

@@ -1,5 +1,7 @@
 #include "solve_setup.hpp"
 
+#include <map>
+
 #include "volmesh/core/boundary.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
@@ -80,20 +82,38 @@ fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain&
   return fem::make_elasticity_problem(spec.name, domain, mesh.tag_names);
 }
 
+void add_solver_option(CLI::App& app, SolverBackend& backend) {
+  const std::map<std::string, SolverBackend> names{{"auto", SolverBackend::automatic},
+                                                   {"eigen", SolverBackend::eigen},
+                                                   {"petsc", SolverBackend::petsc}};
+  app.add_option("--solver", backend,
+                 "who solves the large systems: auto (PETSc CG + BoomerAMG when built with "
+                 "PETSc, else Eigen), eigen (CG + incomplete Cholesky), petsc; PETSc's own "
+                 "options (-ksp_*, -pc_*, -log_view) go after the arguments")
+      ->transform(CLI::CheckedTransformer(names))
+      ->default_str("auto");
+}
+
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress) {
+                                 const SpaceChoice& space, const Progress& progress,
+                                 const Solver& solver) {
   fem::LinearSolverOptions options;
   options.progress = progress;
+  options.backend = solver.backend;
+  options.cell_rank = solver.cell_rank;
   if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe, options);
   return fem::solve_poisson_fv(mesh, problem, options);
 }
 
 fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress) {
+                                 const SpaceChoice& space, const Progress& progress,
+                                 const Solver& solver) {
   if (!space.fe)
     throw InputError("--space fv: finite volumes solve Poisson problems only");
   fem::LinearSolverOptions options;
   options.progress = progress;
+  options.backend = solver.backend;
+  options.cell_rank = solver.cell_rank;
   return fem::solve_elasticity(mesh, problem, *space.fe, options);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What `solve`, `study` and `demo` share: the space a mesh is solved in, the problem (named,
 // or given as expressions) and the solve itself.
+#include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,11 +45,23 @@ fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domai
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
                                           const PolyMesh& mesh);
 
+// --solver auto|eigen|petsc: who runs CG on the large systems (LinearSolverOptions::Backend).
+using SolverBackend = fem::LinearSolverOptions::Backend;
+void add_solver_option(CLI::App& app, SolverBackend& backend);
+
+// The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank).
+struct Solver {
+  SolverBackend backend = SolverBackend::automatic;
+  const std::vector<Index>* cell_rank = nullptr;
+};
+
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress = {});
+                                 const SpaceChoice& space, const Progress& progress = {},
+                                 const Solver& solver = {});
 // Throws InputError for finite volumes (Poisson only).
 fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress = {});
+                                 const SpaceChoice& space, const Progress& progress = {},
+                                 const Solver& solver = {});
 
 // What a VTU shows of a solution. Poisson: point data "u" (cell data for finite volumes,
 // whose unknowns live in the cells) and "error" = u_h − u where the problem has an exact

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "distributed.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/open_domain.hpp"
 
@@ -51,15 +52,17 @@ std::string series_name(const std::string& method, const meshers::MethodOptions&
 
 fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
                             const PolyMesh& mesh, const SpaceChoice& space,
-                            const Progress& progress) {
+                            const Progress& progress, const Solver& solver) {
   fem::LevelSolve out;
   if (kind == fem::ProblemKind::elasticity) {
     const fem::VectorSolution s =
-        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space, progress);
+        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space, progress,
+                     solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   } else {
     const fem::ScalarSolution s =
-        solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space, progress);
+        solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space, progress,
+                     solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   }
   return out;
@@ -117,12 +120,23 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
       request.uniform = true;
       request.options = spec.options;
       request.progress = meshing;
-      meshers::MeshResult r = meshers::mesh(method, *domain, request);
-      if (!space) space = choose_space(spec.space, method.default_space, r.mesh);
-      return fem::StudyMesh{std::move(r.mesh), r.h};
+      std::vector<double> h{0.0};
+      PolyMesh m = mesh_on_rank_zero(
+          [&] {
+            meshers::MeshResult r = meshers::mesh(method, *domain, request);
+            h[0] = r.h;
+            return std::move(r.mesh);
+          },
+          &h);
+      if (!space) space = choose_space(spec.space, method.default_space, m);
+      return fem::StudyMesh{std::move(m), h[0]};
     };
     const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {
-      return solve_level(spec, kind, *domain, m, *space, solving);
+      // A distributed run partitions every level into one part per rank.
+      const std::vector<Index> cell_rank =
+          fem::distributed_run() ? partition_for_ranks(m) : std::vector<Index>{};
+      return solve_level(spec, kind, *domain, m, *space, solving,
+                         {spec.solver, fem::distributed_run() ? &cell_rank : nullptr});
     };
     const double share = 1.0 / static_cast<double>(methods.size());
     fem::ConvergenceSeries s = fem::run_convergence_study(

@@ -22,6 +22,7 @@ struct StudySpec {
   std::string space;                 // empty: the method's default
   meshers::MethodOptions options;    // given to every method
   int first_level = 0, last_level = 0;
+  SolverBackend solver = SolverBackend::automatic;
 };
 
 struct StudyOutcome {

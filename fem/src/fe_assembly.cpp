@@ -18,25 +18,34 @@ namespace {
 // Local matrices held at once: bounds the memory of a batch (32 MB of doubles).
 constexpr std::size_t kBatchEntries = std::size_t(1) << 22;
 
+// The assembled cells: a given increasing list, or all cells.
+struct CellList {
+  const std::vector<Index>* list;
+  Index count;
+  Index size() const { return list ? static_cast<Index>(list->size()) : count; }
+  Index operator[](Index k) const { return list ? (*list)[k] : k; }
+};
+
 struct Csr {
   std::vector<Index> offsets;
   std::vector<Index> items;
 };
 
-// Node → cells using it, cells in increasing order.
-Csr node_cells(const FeSpace& space) {
+// Node → the assembled cells using it, cells in increasing order.
+Csr node_cells(const FeSpace& space, const CellList& cells) {
   Csr r;
   r.offsets.assign(space.num_nodes() + 1, 0);
-  for (Index n : space.cell_node_list) ++r.offsets[n + 1];
+  for (Index k = 0; k < cells.size(); ++k)
+    for (Index n : space.cell_nodes(cells[k])) ++r.offsets[n + 1];
   for (Index n = 0; n < space.num_nodes(); ++n) r.offsets[n + 1] += r.offsets[n];
-  r.items.resize(space.cell_node_list.size());
+  r.items.resize(r.offsets.back());
   std::vector<Index> fill(r.offsets.begin(), r.offsets.end() - 1);
-  for (Index c = 0; c < space.num_cells(); ++c)
-    for (Index n : space.cell_nodes(c)) r.items[fill[n]++] = c;
+  for (Index k = 0; k < cells.size(); ++k)
+    for (Index n : space.cell_nodes(cells[k])) r.items[fill[n]++] = cells[k];
   return r;
 }
 
-// For each node j, the sorted nodes i >= j sharing a cell with it (j included).
+// For each node j, the sorted nodes i >= j sharing an assembled cell with it (j included).
 Csr lower_node_pattern(const FeSpace& space, const Csr& cells_of) {
   const Index nn = space.num_nodes();
   Csr r;
@@ -44,7 +53,10 @@ Csr lower_node_pattern(const FeSpace& space, const Csr& cells_of) {
   // A per-thread stamp array marks the nodes already gathered for node j.
   tbb::enumerable_thread_specific<std::vector<Index>> stamps(
       [nn] { return std::vector<Index>(nn, kNoIndex); });
+  // Node j itself first, so that a node no assembled cell touches keeps its diagonal.
   const auto gather = [&](Index j, std::vector<Index>& stamp, auto&& emit) {
+    stamp[j] = j;
+    emit(j);
     for (Index k = cells_of.offsets[j]; k < cells_of.offsets[j + 1]; ++k)
       for (Index i : space.cell_nodes(cells_of.items[k]))
         if (i >= j && stamp[i] != j) {
@@ -158,14 +170,15 @@ void for_each_cell(Index begin, Index end,
 }
 
 GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local,
-                            InternalRows* internal_rows) {
+                            InternalRows* internal_rows, const std::vector<Index>* subset) {
+  const CellList cells{subset, space.num_cells()};
   const Index nn = space.num_nodes();
-  const Index nc = space.num_cells();
+  const Index nc = cells.size();
   if (std::int64_t(nn) * components > kMaxIndex)
     throw InputError("mesh: more unknowns than 32-bit indices allow");
   const Index ndof = nn * components;
   GlobalSystem system;
-  system.lower = lower_pattern(lower_node_pattern(space, node_cells(space)), nn, components);
+  system.lower = lower_pattern(lower_node_pattern(space, node_cells(space, cells)), nn, components);
   system.rhs = Eigen::VectorXd::Zero(ndof);
   const int* outer = system.lower.outerIndexPtr();
   const int* inner = system.lower.innerIndexPtr();
@@ -177,9 +190,13 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
   };
   InternalRows* const keep = internal > 0 ? internal_rows : nullptr;
   if (keep) {
+    // Every cell has its slot; a cell outside the subset an empty one.
+    std::vector<char> assembled(space.num_cells(), 0);
+    for (Index k = 0; k < nc; ++k) assembled[cells[k]] = 1;
     keep->offset.assign(1, 0);
-    for (Index c = 0; c < nc; ++c)
-      keep->offset.push_back(keep->offset.back() + internal * (size_of(c) + internal + 1));
+    for (Index c = 0; c < space.num_cells(); ++c)
+      keep->offset.push_back(keep->offset.back() +
+                             (assembled[c] ? internal * (size_of(c) + internal + 1) : 0));
     keep->values.resize(keep->offset.back());
   }
   // Column ranges, one per thread: each column is summed by one thread in cell order.
@@ -190,16 +207,18 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
     Index end = begin;
     offset.assign(1, 0);
     f_offset.assign(1, 0);
-    while (end < nc &&
-           (end == begin || offset.back() + size_of(end) * size_of(end) <= kBatchEntries)) {
-      offset.push_back(offset.back() + size_of(end) * size_of(end));
-      f_offset.push_back(f_offset.back() + size_of(end));
+    while (end < nc && (end == begin || offset.back() + size_of(cells[end]) *
+                                                             size_of(cells[end]) <=
+                                            kBatchEntries)) {
+      offset.push_back(offset.back() + size_of(cells[end]) * size_of(cells[end]));
+      f_offset.push_back(f_offset.back() + size_of(cells[end]));
       ++end;
     }
     k_batch.resize(offset.back());
     f_batch.resize(f_offset.back());
 
-    for_each_cell(begin, end, [&](Index c, LocalWork& work) {
+    for_each_cell(begin, end, [&](Index k, LocalWork& work) {
+      const Index c = cells[k];
       local(c, work);
       if (keep) {
         const Eigen::Index n = work.k.rows();
@@ -209,23 +228,24 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
       }
       condense(work.k, work.f, internal);
       const Eigen::Index m = static_cast<Eigen::Index>(size_of(c));
-      Eigen::Map<Eigen::MatrixXd>(k_batch.data() + offset[c - begin], m, m) =
+      Eigen::Map<Eigen::MatrixXd>(k_batch.data() + offset[k - begin], m, m) =
           work.k.topLeftCorner(m, m);
-      Eigen::Map<Eigen::VectorXd>(f_batch.data() + f_offset[c - begin], m) = work.f.head(m);
+      Eigen::Map<Eigen::VectorXd>(f_batch.data() + f_offset[k - begin], m) = work.f.head(m);
     });
 
     tbb::parallel_for(0, ranges, [&](int part) {
       const Index lo = static_cast<Index>(std::int64_t(ndof) * part / ranges);
       const Index hi = static_cast<Index>(std::int64_t(ndof) * (part + 1) / ranges);
       std::vector<Index> dof;
-      for (Index c = begin; c < end; ++c) {
+      for (Index k = begin; k < end; ++k) {
+        const Index c = cells[k];
         const auto nodes = space.cell_nodes(c);
         const std::size_t m = size_of(c);
         dof.resize(m);
         for (std::size_t a = 0; a < nodes.size(); ++a)
           for (int i = 0; i < components; ++i) dof[a * components + i] = nodes[a] * components + i;
-        const double* k = k_batch.data() + offset[c - begin];
-        const double* f = f_batch.data() + f_offset[c - begin];
+        const double* ke = k_batch.data() + offset[k - begin];
+        const double* f = f_batch.data() + f_offset[k - begin];
         for (std::size_t b = 0; b < m; ++b) {
           const Index col = dof[b];
           if (col < lo || col >= hi) continue;
@@ -234,7 +254,7 @@ GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSys
           const int* last = inner + outer[col + 1];
           for (std::size_t a = 0; a < m; ++a)
             if (dof[a] >= col)
-              values[std::lower_bound(first, last, dof[a]) - inner] += k[b * m + a];
+              values[std::lower_bound(first, last, dof[a]) - inner] += ke[b * m + a];
         }
       }
     });

@@ -36,9 +36,12 @@ struct InternalRows {
 };
 
 // `internal_rows`, when given, receives the internal rows (none for a space without
-// internal nodes).
+// internal nodes). `cells`, when given (increasing), are the only cells assembled: the
+// matrix then holds their entries only (a rank's rows are whole when `cells` contains every
+// cell touching them) and only they get internal rows.
 GlobalSystem assemble_cells(const FeSpace& space, int components, const LocalSystem& local,
-                            InternalRows* internal_rows = nullptr);
+                            InternalRows* internal_rows = nullptr,
+                            const std::vector<Index>* cells = nullptr);
 
 // Static condensation of the trailing `internal` unknowns: afterwards the leading block of
 // (k, f) is the condensed system of the others.

@@ -11,9 +11,11 @@
 #include <vector>
 
 #include "fe_assembly.hpp"
+#include "fe_distributed.hpp"
 #include "fe_shared.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/fem/linear_solver.hpp"
+#include "volmesh/fem/parallel.hpp"
 
 namespace volmesh::fem::detail {
 
@@ -116,11 +118,13 @@ inline const CellPoints& load_points(const FeSpace& space, Index c, LocalWork& w
 }
 
 // A solved field: its space, the cells' internal rows (which recover the condensed internal
-// unknowns) and the nodal unknowns.
+// unknowns) and the nodal unknowns. own_cell: in a distributed solve, the cells this rank
+// evaluates (the others have no internal rows here); empty: all.
 struct SolvedField {
   std::unique_ptr<FeSpace> space;
   InternalRows internal_rows;
   Eigen::VectorXd u;
+  std::vector<char> own_cell;
 };
 
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
@@ -146,10 +150,15 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   SolvedField out;
   out.space = make_space(mesh, space_kind);
   const FeSpace& space = *out.space;
+  Distribution distribution;
+  if (options.cell_rank) {
+    distribution = distribute(space, *options.cell_rank);
+    out.own_cell = distribution.own_cell;
+  }
   const double space_seconds = stage_seconds();
   GlobalSystem system = assemble_cells(
       space, C, [&space, &local](Index c, LocalWork& work) { local(space, c, work); },
-      &out.internal_rows);
+      &out.internal_rows, options.cell_rank ? &distribution.cells : nullptr);
   add_boundary_load(
       mesh, space, C, conditions.natural, to_true_boundary,
       [&](Index tag, const Vec3& at, double* values) {
@@ -174,8 +183,12 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   }
   const double boundary_seconds = stage_seconds();
   volmesh::report(options.progress, "linear solve", kLinearSolveStart);
-  out.u = solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options, report);
-  report.setup_seconds = space_seconds + boundary_seconds;
+  out.u = options.cell_rank
+              ? solve_distributed(space, C, distribution, system, fixed, fixed_values, options,
+                                  report)
+              : solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options,
+                                      report, {C, &space.node_point});
+  report.setup_seconds += space_seconds + boundary_seconds;
   report.assembly_seconds += assembly_seconds;
   return out;
 }
@@ -200,10 +213,13 @@ struct PointValue {
 
 // Per cell, in parallel: fn(c, x, weight, value, result) at each point of the cell's
 // `rule`, u_h from the solved field; result.volume sums the weights. Results in cell order.
+// A distributed solve's ranks each integrate their own cells and add up the results (a cell's
+// result comes from one rank, zeros from the others: the same numbers as one rank's).
 template <int C, class CellResult, class Fn>
 std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, const Fn& fn) {
   std::vector<CellResult> out(field.space->num_cells());
   for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
+    if (!field.own_cell.empty() && !field.own_cell[c]) return;
     Eigen::VectorXd local_u;
     cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
     field.space->cell_points(c, rule, work.load);
@@ -224,6 +240,11 @@ std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, con
       fn(c, q.x[p], q.weight[p], v, r);
     });
   });
+  if (!field.own_cell.empty()) {
+    static_assert(sizeof(CellResult) % sizeof(double) == 0, "a cell result is doubles only");
+    sum_over_ranks(reinterpret_cast<double*>(out.data()),
+                   out.size() * (sizeof(CellResult) / sizeof(double)));
+  }
   return out;
 }
 

@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "petsc_solve.hpp"
+#include "volmesh/fem/parallel.hpp"
+
 namespace volmesh::fem {
 namespace {
 
@@ -54,13 +57,45 @@ Eigen::VectorXd solve_cg(const Matrix& a, const Eigen::VectorXd& b,
   return x;
 }
 
+bool use_petsc(const LinearSolverOptions& options, Index unknowns) {
+  using Backend = LinearSolverOptions::Backend;
+  if (options.backend == Backend::petsc && !petsc_built())
+    throw std::runtime_error(
+        "the PETSc solver was asked for, and this volmesh was built without PETSc");
+  return options.backend == Backend::petsc ||
+         (options.backend == Backend::automatic && petsc_built() &&
+          unknowns > options.petsc_limit);
+}
+
+// This process alone solves the whole system (the distributed path is fe_distributed.cpp).
+// The conversion to PETSc's rows counts as assembly.
+Eigen::VectorXd solve_petsc(const Matrix& a, const Eigen::VectorXd& b,
+                            const LinearSolverOptions& options, LinearSolveReport& report,
+                            const NodeLayout& layout) {
+  // Starting MPI and PETSc in a serial run is set-up.
+  const auto starting = Clock::now();
+  start_petsc();
+  report.setup_seconds += std::chrono::duration<double>(Clock::now() - starting).count();
+  const auto start = Clock::now();
+  detail::OwnedRows rows = detail::owned_rows_of(a, b);
+  rows.block_size = layout.components;
+  if (layout.components == 3 && layout.points) {
+    rows.coordinates.reserve(a.rows());
+    for (const Vec3& p : *layout.points) rows.coordinates.insert(rows.coordinates.end(), {p.x(), p.y(), p.z()});
+  }
+  report.assembly_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+  return detail::petsc_solve_spd(rows, options, report);
+}
+
 }  // namespace
 
 Eigen::VectorXd solve_spd(const Matrix& a, const Eigen::VectorXd& b,
-                          const LinearSolverOptions& options, LinearSolveReport& report) {
+                          const LinearSolverOptions& options, LinearSolveReport& report,
+                          const NodeLayout& layout) {
   const auto start = Clock::now();
   report.unknowns = static_cast<Index>(a.rows());
   report.preconditioner_seconds = 0.0;
+  const double assembly_before = report.assembly_seconds, setup_before = report.setup_seconds;
   Eigen::VectorXd x;
   if (a.rows() == 0) {
     x.resize(0);
@@ -68,12 +103,17 @@ Eigen::VectorXd solve_spd(const Matrix& a, const Eigen::VectorXd& b,
   } else {
     const bool direct =
         options.kind == LinearSolverOptions::Kind::direct ||
-        (options.kind == LinearSolverOptions::Kind::automatic && a.rows() <= options.direct_limit);
-    x = direct ? solve_direct(a, b, report) : solve_cg(a, b, options, report);
+        (options.kind == LinearSolverOptions::Kind::automatic &&
+         options.backend != LinearSolverOptions::Backend::petsc && a.rows() <= options.direct_limit);
+    x = direct                       ? solve_direct(a, b, report)
+        : use_petsc(options, report.unknowns) ? solve_petsc(a, b, options, report, layout)
+                                     : solve_cg(a, b, options, report);
   }
   report.residual = a.rows() ? relative_residual(a, x, b) : 0.0;
   report.solve_seconds = std::chrono::duration<double>(Clock::now() - start).count() -
-                         report.preconditioner_seconds;
+                         report.preconditioner_seconds -
+                         (report.assembly_seconds - assembly_before) -
+                         (report.setup_seconds - setup_before);
   return x;
 }
 
@@ -81,7 +121,7 @@ Eigen::VectorXd solve_spd_constrained(const Matrix& a, const Eigen::VectorXd& b,
                                       const std::vector<char>& fixed,
                                       const Eigen::VectorXd& fixed_values,
                                       const LinearSolverOptions& options,
-                                      LinearSolveReport& report) {
+                                      LinearSolveReport& report, const NodeLayout& layout) {
   const auto start = Clock::now();
   const Index n = static_cast<Index>(a.rows());
   std::vector<Index> free_index(n, kNoIndex);
@@ -112,7 +152,14 @@ Eigen::VectorXd solve_spd_constrained(const Matrix& a, const Eigen::VectorXd& b,
   reduced.setFromTriplets(entries.begin(), entries.end());
   entries = {};
   const double eliminated = std::chrono::duration<double>(Clock::now() - start).count();
-  const Eigen::VectorXd y = solve_spd(reduced, rhs, options, report);
+  // The free nodes' points in the reduced order: a node's unknowns are fixed together.
+  std::vector<Vec3> free_points;
+  if (layout.points) {
+    for (Index i = 0; i < n; i += layout.components)
+      if (!fixed[i]) free_points.push_back((*layout.points)[i / layout.components]);
+  }
+  const Eigen::VectorXd y = solve_spd(reduced, rhs, options, report,
+                                      {layout.components, layout.points ? &free_points : nullptr});
 
   Eigen::VectorXd x(n);
   for (Index i = 0; i < n; ++i) x[i] = fixed[i] ? fixed_values[i] : y[free_index[i]];

@@ -105,18 +105,18 @@ bool same_arrays(const MeshFields& a, const MeshFields& b) {
          names(a.point) == names(b.point);
 }
 
-std::string summary(std::span<const MeshPiece> pieces, const std::string& stem) {
+std::string summary(const MeshFields& arrays, std::size_t pieces, const std::string& stem) {
   std::string text =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n"
       "  <PUnstructuredGrid GhostLevel=\"0\">\n";
-  text += array_list(pieces.front().fields);
+  text += array_list(arrays);
   text +=
       "    <PPoints>\n"
       "      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
       "    </PPoints>\n";
-  for (std::size_t i = 0; i < pieces.size(); ++i)
+  for (std::size_t i = 0; i < pieces; ++i)
     text += "    <Piece Source=\"" + xml_attribute(stem + "/" + piece_name(stem, i)) + "\"/>\n";
   text += "  </PUnstructuredGrid>\n</VTKFile>\n";
   return text;
@@ -124,47 +124,64 @@ std::string summary(std::span<const MeshPiece> pieces, const std::string& stem) 
 
 }  // namespace
 
+PvtuSet::PvtuSet(const fs::path& path)
+    : path_(path), stem_(path.stem().string()) {
+  const fs::path dir = path.parent_path() / stem_;
+  check_replaceable(dir, stem_, path);
+  pieces_ = std::make_unique<AtomicOutput>(dir);
+  summary_ = std::make_unique<AtomicOutput>(path);
+  std::error_code ec;
+  fs::create_directory(pieces_->temporary(), ec);
+  if (ec)
+    throw InputError(path.string() + ": cannot create a directory for the pieces (" + ec.message() +
+                     ")");
+}
+
+PvtuSet::~PvtuSet() = default;
+
+const fs::path& PvtuSet::pieces_directory() const { return pieces_->temporary(); }
+
+void PvtuSet::commit(const MeshFields& arrays, std::size_t pieces) {
+  {
+    std::ofstream stream = summary_->open_stream();
+    stream << summary(arrays, pieces, stem_);
+    stream.close();
+    if (!stream) throw InputError(path_.string() + ": write failed");
+  }
+  pieces_->commit();
+  try {
+    summary_->commit();
+  } catch (const InputError&) {
+    std::error_code ec;
+    fs::remove_all(path_.parent_path() / stem_, ec);  // pieces without their summary are no result
+    throw;
+  }
+}
+
+void write_pvtu_piece(const MeshPiece& piece, std::size_t i, const fs::path& pieces_directory,
+                      const fs::path& path) {
+  const std::string stem = path.stem().string();
+  try {
+    write_vtu(piece.mesh, pieces_directory / piece_name(stem, i), piece.fields);
+  } catch (const InputError& e) {  // name the piece where it was meant to go
+    std::string what = e.what();
+    const std::string temporary = pieces_directory.string();
+    if (const auto at = what.find(temporary); at != std::string::npos)
+      what.replace(at, temporary.size(), (path.parent_path() / stem).string());
+    throw InputError(what);
+  }
+}
+
 void write_pvtu(std::span<const MeshPiece> pieces, const fs::path& path) {
   if (pieces.empty()) throw InputError(path.string() + ": no pieces to write");
   for (std::size_t i = 1; i < pieces.size(); ++i)
     if (!same_arrays(pieces.front().fields, pieces[i].fields))
       throw InputError(path.string() + ": piece " + std::to_string(i) +
                        " carries other arrays than piece 0");
-  const std::string stem = path.stem().string();
-  const fs::path dir = path.parent_path() / stem;
-  check_replaceable(dir, stem, path);
-
-  AtomicOutput pieces_output(dir);
-  AtomicOutput summary_output(path);
-  std::error_code ec;
-  fs::create_directory(pieces_output.temporary(), ec);
-  if (ec)
-    throw InputError(path.string() + ": cannot create a directory for the pieces (" + ec.message() +
-                     ")");
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    try {
-      write_vtu(pieces[i].mesh, pieces_output.temporary() / piece_name(stem, i), pieces[i].fields);
-    } catch (const InputError& e) {  // name the piece where it was meant to go
-      std::string what = e.what();
-      const std::string temporary = pieces_output.temporary().string();
-      if (const auto at = what.find(temporary); at != std::string::npos)
-        what.replace(at, temporary.size(), dir.string());
-      throw InputError(what);
-    }
-  }
-  {
-    std::ofstream stream = summary_output.open_stream();
-    stream << summary(pieces, stem);
-    stream.close();
-    if (!stream) throw InputError(path.string() + ": write failed");
-  }
-  pieces_output.commit();
-  try {
-    summary_output.commit();
-  } catch (const InputError&) {
-    fs::remove_all(dir, ec);  // pieces without their summary are no result
-    throw;
-  }
+  PvtuSet set(path);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    write_pvtu_piece(pieces[i], i, set.pieces_directory(), path);
+  set.commit(pieces.front().fields, pieces.size());
 }
 
 }  // namespace volmesh

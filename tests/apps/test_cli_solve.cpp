@@ -154,8 +154,9 @@ void expect_refused(const std::string& args, const std::string& what, const fs::
 // method (no check), read from a file (checked), finite volumes, elasticity.
 TEST(CliSolve, StageSecondsAddUpToTheTotal) {
   const fs::path dir = test::scratch_dir("solve-seconds");
-  const std::vector<std::string> stages{"mesh",  "check",  "setup", "assembly", "preconditioner",
-                                        "solve", "errors", "write"};
+  const std::vector<std::string> stages{"mesh",     "check",          "partition",
+                                        "setup",    "assembly",       "preconditioner",
+                                        "solve",    "errors",         "write"};
   const fs::path mesh = dir / "ball.vtu";
   ASSERT_EQ(run_volmesh("mesh cutcell builtin:ball --level 3 -o " + mesh.string(), dir).exit_code,
             0);

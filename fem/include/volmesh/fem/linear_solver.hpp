@@ -1,7 +1,10 @@
 #pragma once
-// Sparse symmetric positive definite systems: conjugate gradients preconditioned by an
-// incomplete Cholesky factorisation (Eigen's IncompleteCholesky with AMD ordering and its
-// automatic diagonal shift), or a sparse LDLᵀ factorisation for small systems.
+// Sparse symmetric positive definite systems: a sparse LDLᵀ factorisation for small systems;
+// above that conjugate gradients, preconditioned by hypre's BoomerAMG through PETSc when
+// this build has PETSc (parallel.hpp), else by an incomplete Cholesky factorisation
+// (Eigen's IncompleteCholesky with AMD ordering and its automatic diagonal shift). AMG keeps
+// the iteration count about flat under refinement; incomplete Cholesky doubles it with each
+// halving of h.
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -13,7 +16,16 @@ namespace volmesh::fem {
 
 struct LinearSolverOptions {
   enum class Kind { automatic, cg, direct };
-  Kind kind = Kind::automatic;  // automatic: direct up to direct_limit unknowns, else CG
+  // automatic: direct up to direct_limit unknowns, else CG; always CG with Backend::petsc.
+  Kind kind = Kind::automatic;
+  // Who runs CG: automatic is PETSc when the build has it and the system has more than
+  // petsc_limit unknowns, else Eigen. Starting MPI costs a serial run about 0.8 s once, and
+  // below the limit Eigen's CG finishes well within a second; above it BoomerAMG's flat
+  // iteration count wins (the sine problem on the ball, 102k unknowns: 10 against 58
+  // iterations).
+  enum class Backend { automatic, eigen, petsc };
+  Backend backend = Backend::automatic;
+  Index petsc_limit = 50000;
   // Measured (validation/fem/run.sh --solvers): Eigen's simplicial LDLᵀ fills in heavily on
   // 3D meshes, so CG with incomplete Cholesky is faster from about 1,000 unknowns on (P1
   // tets 12,167 unknowns: 0.17 s against 4.0 s; Q1 elasticity 5,184: 0.29 s against 2.1 s).
@@ -25,13 +37,26 @@ struct LinearSolverOptions {
   // report their stages here ("assembly", "linear solve", "results": the cell values and
   // errors) with rough fractions of their run; solve_spd ignores it.
   Progress progress;
+  // A run over the ranks (parallel.hpp): each cell's rank, the same array on every rank. The
+  // finite-element solves are then collective (PETSc over all ranks, see fe_distributed.hpp),
+  // whatever the number of unknowns. Null: this process solves alone.
+  const std::vector<Index>* cell_rank = nullptr;
+};
+
+// How the unknowns sit on the nodes: `components` per node, node-major, and the nodes'
+// points, from which AMG builds the rigid-body modes of elasticity (components 3).
+struct NodeLayout {
+  int components = 1;
+  const std::vector<Vec3>* points = nullptr;  // per node; may be null
 };
 
 // Only the lower triangle of `a` is read, so a full symmetric matrix and its lower half give
 // the same result. Throws std::runtime_error when CG does not reach the tolerance or the factorisation fails
-// (the matrix is not SPD: a mesh or a problem the discretisation cannot handle).
+// (the matrix is not SPD: a mesh or a problem the discretisation cannot handle), or when
+// the PETSc backend is asked for in a build without it.
 Eigen::VectorXd solve_spd(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
-                          const LinearSolverOptions& options, LinearSolveReport& report);
+                          const LinearSolverOptions& options, LinearSolveReport& report,
+                          const NodeLayout& layout = {});
 
 // A symmetric system with some unknowns fixed (Dirichlet values): the rows and columns of the
 // fixed unknowns are eliminated, the rest solved by solve_spd, the fixed values put back.
@@ -40,6 +65,7 @@ Eigen::VectorXd solve_spd_constrained(const Eigen::SparseMatrix<double>& a,
                                       const std::vector<char>& fixed,
                                       const Eigen::VectorXd& fixed_values,
                                       const LinearSolverOptions& options,
-                                      LinearSolveReport& report);
+                                      LinearSolveReport& report,
+                                      const NodeLayout& layout = {});
 
 }  // namespace volmesh::fem

@@ -1,0 +1,45 @@
+#pragma once
+// What `solve` and `study` do differently when mpirun starts them (fem/parallel.hpp): rank 0
+// meshes (meshing is serial) and sends the mesh to every rank, rank 0 partitions it with
+// METIS into one part per rank and sends the cell → part array, and the output is written
+// by rank 0 (.vtu) or by every rank, one piece each (.pvtu). Every rank holds the whole
+// mesh: the solve's matrix, preconditioner and vectors are distributed, the mesh is not.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "volmesh/core/poly_mesh.hpp"
+#include "volmesh/fem/parallel.hpp"
+#include "volmesh/io/mesh_io.hpp"
+
+namespace volmesh::cli {
+
+// Rank 0's result of make() on every rank, with rank 0's `numbers` (what else make() found
+// that the others need, e.g. the mesh size h). When make() throws on rank 0, every rank
+// throws its message (fem::agree). One rank: make() alone.
+PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make,
+                           std::vector<double>* numbers = nullptr);
+
+// Each cell's rank: rank 0 partitions with METIS (one part per rank) and shares the array.
+// Throws InputError on every rank when there are more ranks than cells.
+std::vector<Index> partition_for_ranks(const PolyMesh& mesh);
+
+// Writes the solution: a .vtu by rank 0, a .pvtu as one piece per rank (part r's cells with
+// their global "global_cell" and "global_point" ids, the same arrays as the .vtu), rank 0
+// writing the summary after every piece exists. cell_rank empty: one rank writes it all.
+// Any rank's failure makes every rank throw.
+void write_solution(const PolyMesh& mesh, const MeshFields& fields,
+                    const std::vector<Index>& cell_rank, const std::filesystem::path& path);
+
+// The command line as volmesh's parser sees it (PETSc's options taken off), kept by main for
+// a re-launch.
+void remember_command_line(int argc, char** argv);
+
+// `--np P` of a serial run: runs this very command line again as `mpirun -np P volmesh ...`,
+// without `--np`, and returns its exit code. mpirun gets --oversubscribe (more ranks than
+// cores are allowed) and, when run as root, --allow-run-as-root. Throws InputError when
+// mpirun cannot be started or the build has no PETSc.
+int relaunch_under_mpirun(int ranks);
+
+}  // namespace volmesh::cli

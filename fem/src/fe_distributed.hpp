@@ -1,0 +1,37 @@
+#pragma once
+// A finite-element solve spread over the ranks (PETSc on PETSC_COMM_WORLD). Every rank holds
+// the whole mesh and builds the same space; rank r owns the cells of part r and the nodes
+// whose lowest-ranked cell is one of them (a node on a part boundary belongs to the lowest
+// part among the cells using it). Each rank computes the local systems of the cells touching
+// its nodes (its own cells and one layer of its neighbours'), so its rows are whole without
+// any exchange of matrix values, and hands PETSc only those rows, the fixed unknowns
+// eliminated: the preallocation is exact and no value goes to another rank. The solution is
+// then gathered to every rank, and each rank evaluates its own cells.
+#include <Eigen/Core>
+#include <vector>
+
+#include "fe_assembly.hpp"
+#include "volmesh/fem/linear_solver.hpp"
+
+namespace volmesh::fem::detail {
+
+struct Distribution {
+  std::vector<Index> cells;    // the cells this rank assembles, increasing
+  std::vector<char> own_cell;  // per cell: in this rank's part
+  std::vector<int> node_owner;  // per node: the rank owning it
+};
+
+// Throws InputError when cell_rank does not give every cell a rank in [0, ranks).
+Distribution distribute(const FeSpace& space, const std::vector<Index>& cell_rank);
+
+// The whole solution on every rank, from a system whose owned rows `system` holds whole
+// (assembled over distribution.cells), the `fixed` unknowns taking `fixed_values`.
+// Collective. Fills report as solve_spd does; the conversion to PETSc's rows counts as
+// assembly.
+Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
+                                  const Distribution& distribution, const GlobalSystem& system,
+                                  const std::vector<char>& fixed,
+                                  const Eigen::VectorXd& fixed_values,
+                                  const LinearSolverOptions& options, LinearSolveReport& report);
+
+}  // namespace volmesh::fem::detail

@@ -1,0 +1,205 @@
+#include "volmesh/fem/parallel.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/types.hpp"
+
+#ifdef VOLMESH_HAVE_PETSC
+#include <petscsys.h>
+#endif
+
+namespace volmesh::fem {
+namespace {
+
+struct State {
+  std::vector<std::string> arguments;  // PETSc's options from the command line
+  bool started = false;
+  bool distributed = false;
+  int rank = 0, ranks = 1;
+};
+
+State& state() {
+  static State s;
+  return s;
+}
+
+// "-name" with a letter after the single dash and an underscore in an identifier: PETSc's
+// option names (-ksp_rtol, -pc_type, -log_view); expressions such as "-x*y" do not match.
+bool is_petsc_option(const char* word) {
+  if (word[0] != '-' || !std::isalpha(static_cast<unsigned char>(word[1]))) return false;
+  bool underscore = false;
+  for (const char* c = word + 1; *c; ++c) {
+    if (*c == '_') underscore = true;
+    else if (!std::isalnum(static_cast<unsigned char>(*c))) return false;
+  }
+  return underscore;
+}
+
+bool starts_like_option(const char* word) {
+  return word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+}
+
+// Set by mpirun (Open MPI, MPICH/PMI, PMIx): the run has several processes from the start.
+bool launched_by_mpirun() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
+         std::getenv("PMIX_RANK");
+}
+
+}  // namespace
+
+Session::Session(int& argc, char** argv) {
+  State& s = state();
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    if (!is_petsc_option(argv[i])) {
+      argv[kept++] = argv[i];
+      continue;
+    }
+    s.arguments.emplace_back(argv[i]);
+    if (i + 1 < argc && !starts_like_option(argv[i + 1])) s.arguments.emplace_back(argv[++i]);
+  }
+  argc = kept;
+  argv[argc] = nullptr;
+  if (petsc_built() && launched_by_mpirun()) {
+    start_petsc();
+    s.distributed = true;
+  }
+}
+
+const std::vector<std::string>& petsc_arguments() { return state().arguments; }
+bool petsc_started() { return state().started; }
+bool distributed_run() { return state().distributed; }
+int rank() { return state().rank; }
+int ranks() { return state().ranks; }
+
+#ifdef VOLMESH_HAVE_PETSC
+
+bool petsc_built() { return true; }
+
+std::string backend_summary() {
+  return "linear solvers: Eigen (LDLT, CG + incomplete Cholesky), PETSc " +
+         std::to_string(PETSC_VERSION_MAJOR) + "." + std::to_string(PETSC_VERSION_MINOR) + "." +
+         std::to_string(PETSC_VERSION_SUBMINOR) + " (CG + hypre BoomerAMG)";
+}
+
+void start_petsc() {
+  State& s = state();
+  if (s.started) return;
+  // PETSc keeps the argument vector: it lives as long as the state.
+  static std::string program = "volmesh";
+  static std::vector<char*> words;
+  words.assign(1, program.data());
+  for (std::string& a : s.arguments) words.push_back(a.data());
+  words.push_back(nullptr);
+  int count = static_cast<int>(words.size()) - 1;
+  char** vector = words.data();
+  if (PetscInitialize(&count, &vector, nullptr, nullptr) != 0)
+    throw std::runtime_error("PETSc failed to start");
+  // Errors come back as codes, which the backend turns into exceptions with one line.
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &s.rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &s.ranks);
+  s.started = true;
+}
+
+Session::~Session() {
+  if (state().started) PetscFinalize();
+}
+
+void sum_over_ranks(double* values, std::size_t count) {
+  if (ranks() == 1) return;
+  // In chunks: MPI counts are int.
+  constexpr std::size_t kChunk = std::size_t(1) << 28;
+  for (std::size_t at = 0; at < count; at += kChunk)
+    MPI_Allreduce(MPI_IN_PLACE, values + at, static_cast<int>(std::min(kChunk, count - at)),
+                  MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+}
+
+double max_over_ranks(double value) {
+  if (ranks() == 1) return value;
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  return value;
+}
+
+std::vector<double> gather_to_all(const double* mine, std::size_t count) {
+  if (ranks() == 1) return std::vector<double>(mine, mine + count);
+  if (count > std::size_t(kMaxIndex)) throw std::runtime_error("gather: more values than 32-bit counts allow");
+  std::vector<int> counts(ranks()), starts(ranks(), 0);
+  const int n = static_cast<int>(count);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD);
+  std::int64_t total = 0;
+  for (int r = 0; r < ranks(); ++r) {
+    starts[r] = static_cast<int>(total);
+    total += counts[r];
+  }
+  if (total > kMaxIndex) throw std::runtime_error("gather: more values than 32-bit counts allow");
+  std::vector<double> out(total);
+  MPI_Allgatherv(mine, n, MPI_DOUBLE, out.data(), counts.data(), starts.data(), MPI_DOUBLE,
+                 PETSC_COMM_WORLD);
+  return out;
+}
+
+void broadcast(std::vector<char>& bytes) {
+  if (ranks() == 1) return;
+  std::int64_t size = static_cast<std::int64_t>(bytes.size());
+  MPI_Bcast(&size, 1, MPI_INT64_T, 0, PETSC_COMM_WORLD);
+  bytes.resize(size);
+  // Large meshes in chunks: MPI counts are int.
+  constexpr std::int64_t kChunk = std::int64_t(1) << 30;
+  for (std::int64_t at = 0; at < size; at += kChunk)
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kChunk, size - at)), MPI_CHAR, 0,
+              PETSC_COMM_WORLD);
+}
+
+void barrier() {
+  if (ranks() > 1) MPI_Barrier(PETSC_COMM_WORLD);
+}
+
+void agree(const std::string& error) {
+  if (ranks() == 1) {
+    if (!error.empty()) throw InputError(error);
+    return;
+  }
+  int failed = error.empty() ? ranks() : rank();
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  if (failed == ranks()) return;
+  std::vector<char> message(error.begin(), error.end());
+  if (failed != 0) {
+    // The failing rank's message to every rank (rank 0 prints it).
+    std::int64_t size = static_cast<std::int64_t>(message.size());
+    MPI_Bcast(&size, 1, MPI_INT64_T, failed, PETSC_COMM_WORLD);
+    message.resize(size);
+    MPI_Bcast(message.data(), static_cast<int>(size), MPI_CHAR, failed, PETSC_COMM_WORLD);
+  } else {
+    broadcast(message);
+  }
+  throw InputError(std::string(message.begin(), message.end()));
+}
+
+#else
+
+bool petsc_built() { return false; }
+std::string backend_summary() {
+  return "linear solvers: Eigen (LDLT, CG + incomplete Cholesky); built without PETSc";
+}
+void start_petsc() {}
+Session::~Session() = default;
+void sum_over_ranks(double*, std::size_t) {}
+double max_over_ranks(double value) { return value; }
+std::vector<double> gather_to_all(const double* mine, std::size_t count) {
+  return std::vector<double>(mine, mine + count);
+}
+void broadcast(std::vector<char>&) {}
+void barrier() {}
+void agree(const std::string& error) {
+  if (!error.empty()) throw InputError(error);
+}
+
+#endif
+
+}  // namespace volmesh::fem

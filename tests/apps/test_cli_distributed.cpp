@@ -1,0 +1,166 @@
+// The PETSc backend and the distributed solve end to end: PETSc's CG + BoomerAMG agrees with
+// Eigen's solver to the solver tolerance, its iteration count stays flat under refinement,
+// `mpirun -np 1|2 volmesh solve` gives the serial solution (the 2-rank PVTU read by VTK's
+// parallel reader has the serial VTU's cells and values), a study's convergence slope is the
+// same on 2 ranks, and bad set-ups give one error line and a non-zero exit. Skipped in a
+// build without PETSc.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "run_volmesh.hpp"
+
+namespace volmesh {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_volmesh;
+
+// The relative tolerance of the solves (LinearSolverOptions::tolerance 1e-10) leaves the
+// solutions of two solvers this close, relative to the solution's size.
+constexpr double kSolutionAgreement = 1e-7;
+
+bool petsc_built(const fs::path& dir) {
+  return run_volmesh("--version", dir).out.find("PETSc") != std::string::npos;
+}
+
+// `volmesh args` under mpirun with `ranks` processes (root allowed, more ranks than cores).
+test::RunResult run_mpi(int ranks, const std::string& args, const fs::path& dir) {
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = "mpirun --oversubscribe -np " + std::to_string(ranks) + " " +
+                          std::string(VOLMESH_BINARY) + " " + args + " >" + out.string() +
+                          " 2>" + err.string() + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  test::RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = test::slurp(out);
+  r.err = test::slurp(err);
+  return r;
+}
+
+nlohmann::json compare_files(const fs::path& serial, const fs::path& parallel) {
+  const std::string cmd = "/usr/bin/python3 '" + std::string(VOLMESH_TEST_SOURCE) +
+                          "/apps/external/pvtu_compare.py' " + serial.string() + " " +
+                          parallel.string() + " > " + (serial.parent_path() / "cmp.json").string();
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << " (`make test` installs python3-vtk9)";
+  return nlohmann::json::parse(test::slurp(serial.parent_path() / "cmp.json"));
+}
+
+// Every array of the serial file is in the parallel one, equal to the solver tolerance.
+void expect_same_solution(const nlohmann::json& cmp) {
+  EXPECT_EQ(cmp["serial_cells"], cmp["parallel_cells"]) << cmp;
+  EXPECT_TRUE(cmp["cells_once"].get<bool>()) << cmp;
+  for (const auto& [name, a] : cmp["arrays"].items()) {
+    ASSERT_FALSE(a.is_null()) << name << " missing: " << cmp;
+    EXPECT_LE(a["diff"].get<double>(), kSolutionAgreement * std::max(1.0, a["max"].get<double>()))
+        << name << ": " << cmp;
+  }
+}
+
+const std::vector<std::string> kCases{
+    "poisson --problem sine --method grid --tets --level 3",                   // P1
+    "poisson --problem sine --method grid --level 4",                          // Q1
+    "poisson --problem sine --method cutcell --domain builtin:ball --level 4",  // polyhedral
+    "elasticity --problem lame --method cutcell --domain builtin:thick-sphere --level 3",
+    "elasticity --problem elastic-patch --method grid --level 3"};             // Q1, 3 per node
+
+TEST(CliDistributed, PetscMatchesEigenAndOneAndTwoRanksMatchSerial) {
+  const fs::path dir = test::scratch_dir("distributed-match");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  for (const std::string& c : kCases) {
+    SCOPED_TRACE(c);
+    // The serial PETSc solve writes one piece, compared through the parallel reader too.
+    const fs::path eigen = dir / "eigen.vtu", petsc = dir / "petsc.pvtu";
+    const auto e = run_volmesh("solve " + c + " --solver eigen --json -o " + eigen.string(), dir);
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    const auto p = run_volmesh("solve " + c + " --solver petsc --json -o " + petsc.string(), dir);
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_EQ(nlohmann::json::parse(p.out)["linear_solver"], "cg+boomeramg");
+    EXPECT_EQ(nlohmann::json::parse(e.out)["unknowns"], nlohmann::json::parse(p.out)["unknowns"]);
+    expect_same_solution(compare_files(eigen, petsc));
+    for (int ranks : {1, 2}) {
+      const fs::path out = dir / ("ranks" + std::to_string(ranks) + ".pvtu");
+      const auto r = run_mpi(ranks, "solve " + c + " --json -o " + out.string(), dir);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const auto j = nlohmann::json::parse(r.out);  // rank 0 alone prints
+      EXPECT_EQ(j["ranks"], ranks);
+      EXPECT_EQ(j["unknowns"], nlohmann::json::parse(e.out)["unknowns"]);
+      expect_same_solution(compare_files(eigen, out));
+    }
+  }
+}
+
+// BoomerAMG's iterations stay about flat where incomplete Cholesky's double with each level
+// (levels 3-5 here: 8 times the unknowns per level).
+TEST(CliDistributed, IterationsStayFlatUnderRefinement) {
+  const fs::path dir = test::scratch_dir("distributed-iterations");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  std::vector<int> iterations;
+  for (int level : {3, 4, 5}) {
+    const auto r = run_volmesh("solve poisson --problem sine --method cutcell --domain "
+                               "builtin:ball --solver petsc --json --level " +
+                                   std::to_string(level) + " -o " + (dir / "u.vtu").string(),
+                               dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    iterations.push_back(nlohmann::json::parse(r.out)["iterations"]);
+  }
+  EXPECT_LE(iterations.back(), iterations.front() + 4) << iterations[0] << " " << iterations[2];
+}
+
+TEST(CliDistributed, StudySlopeIsTheSameOnTwoRanks) {
+  const fs::path dir = test::scratch_dir("distributed-study");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  const std::string study = "study convergence --problem sine --method cutcell --domain "
+                            "builtin:ball --levels 2..4 --json -o ";
+  const auto serial = run_volmesh(study + (dir / "serial").string() + " --solver eigen", dir);
+  ASSERT_EQ(serial.exit_code, 0) << serial.err;
+  const auto two = run_volmesh(study + (dir / "two").string() + " --np 2", dir);
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  const auto a = nlohmann::json::parse(serial.out)["series"][0]["slope"];
+  const auto b = nlohmann::json::parse(two.out)["series"][0]["slope"];
+  ASSERT_FALSE(a.empty()) << serial.out;
+  for (const auto& [norm, slope] : a.items()) {
+    if (slope.is_null()) continue;
+    EXPECT_NEAR(slope.get<double>(), b[norm].get<double>(), 1e-6) << norm;
+  }
+}
+
+// One line on stderr from rank 0, a non-zero exit, and no hang.
+void expect_one_error(const test::RunResult& r, const std::string& what) {
+  EXPECT_NE(r.exit_code, 0);
+  std::size_t lines = 0, at = 0;
+  while ((at = r.err.find("volmesh: error:", at)) != std::string::npos) ++lines, ++at;
+  EXPECT_EQ(lines, 1u) << r.err;
+  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+}
+
+TEST(CliDistributed, BadSetUpsGiveOneLineOnEveryRankCount) {
+  const fs::path dir = test::scratch_dir("distributed-bad");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  // A grid at level 0 is one cell.
+  expect_one_error(run_mpi(2, "solve poisson --problem sine --method grid --level 0 -o " +
+                                  (dir / "u.pvtu").string(),
+                           dir),
+                   "2 ranks for a mesh of 1 cells");
+  // Rank 0's own failure (a mesh file that does not exist) stops the others too.
+  expect_one_error(run_mpi(2, "solve poisson --problem sine --mesh " + (dir / "none.vtu").string() +
+                                  " -o " + (dir / "u.pvtu").string(),
+                           dir),
+                   "none.vtu");
+  // A PETSc option PETSc refuses, on one and two ranks.
+  for (int ranks : {1, 2})
+    expect_one_error(run_mpi(ranks, "solve poisson --problem sine --method grid --level 3 -o " +
+                                        (dir / "u.pvtu").string() + " -pc_type no-such-pc",
+                             dir),
+                     "PETSc");
+  EXPECT_FALSE(fs::exists(dir / "u.pvtu"));
+}
+
+}  // namespace
+}  // namespace volmesh

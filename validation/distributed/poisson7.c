@@ -1,0 +1,89 @@
+/* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
+ * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
+ * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (HMIS,
+ * ext+i, P_max 4, strong threshold 0.5), relative residual 1e-8. Prints one JSON line:
+ * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
+ * Usage: poisson7 -n N [PETSc options]. */
+#include <petscdmda.h>
+#include <petscksp.h>
+
+static PetscErrorCode assemble(DM da, Mat a, Vec b) {
+  DMDALocalInfo info;
+  MatStencil row, col[7];
+  PetscScalar v[7];
+  PetscFunctionBeginUser;
+  PetscCall(DMDAGetLocalInfo(da, &info));
+  const PetscReal h = 1.0 / (info.mx + 1);
+  for (PetscInt k = info.zs; k < info.zs + info.zm; ++k)
+    for (PetscInt j = info.ys; j < info.ys + info.ym; ++j)
+      for (PetscInt i = info.xs; i < info.xs + info.xm; ++i) {
+        PetscInt n = 0;
+        row.i = i, row.j = j, row.k = k;
+        col[n] = row, v[n++] = 6.0 / (h * h);
+        const PetscInt d[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+        for (int s = 0; s < 6; ++s) {
+          const PetscInt ii = i + d[s][0], jj = j + d[s][1], kk = k + d[s][2];
+          if (ii < 0 || jj < 0 || kk < 0 || ii >= info.mx || jj >= info.my || kk >= info.mz) continue;
+          col[n].i = ii, col[n].j = jj, col[n].k = kk, col[n].c = 0;
+          v[n++] = -1.0 / (h * h);
+        }
+        PetscCall(MatSetValuesStencil(a, 1, &row, n, col, v, INSERT_VALUES));
+      }
+  PetscCall(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
+  PetscCall(VecSet(b, 1.0));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char** argv) {
+  PetscInt n = 64;
+  DM da;
+  Mat a;
+  Vec x, b;
+  KSP ksp;
+  PC pc;
+  PetscMPIInt ranks;
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &ranks));
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-n", &n, NULL));
+  double t0 = MPI_Wtime();
+  PetscCall(DMDACreate3d(PETSC_COMM_WORLD, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE,
+                         DMDA_STENCIL_STAR, n, n, n, PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1,
+                         NULL, NULL, NULL, &da));
+  PetscCall(DMSetUp(da));
+  PetscCall(DMCreateMatrix(da, &a));
+  PetscCall(DMCreateGlobalVector(da, &b));
+  PetscCall(VecDuplicate(b, &x));
+  PetscCall(assemble(da, a, b));
+  double t1 = MPI_Wtime();
+  PetscCall(KSPCreate(PETSC_COMM_WORLD, &ksp));
+  PetscCall(KSPSetOperators(ksp, a, a));
+  PetscCall(KSPSetType(ksp, KSPCG));
+  PetscCall(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+  PetscCall(KSPSetTolerances(ksp, 1e-8, 0.0, PETSC_DEFAULT, 1000));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCHYPRE));
+  PetscCall(PCHYPRESetType(pc, "boomeramg"));
+  PetscCall(PetscOptionsInsertString(NULL,
+      "-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_interp_type ext+i "
+      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.5"));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(KSPSetUp(ksp));
+  PetscCall(PCSetUp(pc));
+  double t2 = MPI_Wtime();
+  PetscCall(KSPSolve(ksp, b, x));
+  double t3 = MPI_Wtime();
+  PetscInt its;
+  PetscCall(KSPGetIterationNumber(ksp, &its));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                        "{\"unknowns\": %" PetscInt_FMT ", \"ranks\": %d, \"iterations\": %" PetscInt_FMT
+                        ", \"assembly\": %.3f, \"preconditioner\": %.3f, \"solve\": %.3f}\n",
+                        n * n * n, ranks, its, t1 - t0, t2 - t1, t3 - t2));
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(MatDestroy(&a));
+  PetscCall(DMDestroy(&da));
+  PetscCall(PetscFinalize());
+  return 0;
+}
