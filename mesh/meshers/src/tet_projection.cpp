@@ -1,17 +1,13 @@
 // tet-projection: the exact projection mesher (mesh/tet, projection.hpp) on a domain's
 // triangulated surfaces, rounded back to doubles with every tet checked (rounding.hpp).
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "registration.hpp"
+#include "tet_surfaces.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
-#include "volmesh/domain/builtin.hpp"
-#include "volmesh/domain/surface.hpp"
-#include "volmesh/geometry/self_intersections.hpp"
 #include "volmesh/tet/projection.hpp"
 #include "volmesh/tet/rounding.hpp"
 
@@ -19,47 +15,7 @@ namespace volmesh::meshers {
 
 namespace {
 
-constexpr std::string_view kBuiltin = "builtin:";
-
-// The domain's surfaces, labelled as its regions: a surface domain's, or the triangulation of
-// a builtin with a polyhedral boundary (builtin_surfaces).
-std::vector<tet::ProjectionSurface> surfaces_of(const Domain& domain, const std::string& name) {
-  const auto* given = dynamic_cast<const SurfaceDomain*>(&domain);
-  std::optional<SurfaceDomain> polyhedral;
-  if (given == nullptr && name.starts_with(kBuiltin)) {
-    std::vector<LabelledSurface> list = builtin_surfaces(name.substr(kBuiltin.size()));
-    if (!list.empty()) given = &polyhedral.emplace(std::move(list));
-  }
-  if (given == nullptr)
-    throw InputError("tet-projection: " + name +
-                     " is not given by triangulated surfaces; give a surface file (.stl .off "
-                     ".obj .ply) or a builtin made of triangles");
-  std::vector<tet::ProjectionSurface> out;
-  for (Index s = 0; s < static_cast<Index>(given->labels().size()); ++s) {
-    tet::ProjectionSurface p{given->surface(s), given->labels()[s], given->depths()[s] == 0};
-    p.name = domain.boundary_name(p.surface.points.front());
-    if (p.name.empty()) p.name = "surface";
-    out.push_back(std::move(p));
-  }
-  return out;
-}
-
-// The method needs surfaces that neither cross themselves nor each other.
-void require_no_intersections(const std::vector<tet::ProjectionSurface>& surfaces,
-                              const std::string& name) {
-  TriSurface all;
-  for (const tet::ProjectionSurface& s : surfaces) {
-    const Index first = all.num_points();
-    all.points.insert(all.points.end(), s.surface.points.begin(), s.surface.points.end());
-    for (const auto& t : s.surface.triangles)
-      all.triangles.push_back({first + t[0], first + t[1], first + t[2]});
-  }
-  const auto pairs = find_self_intersections(all, 1);
-  if (!pairs.empty())
-    throw InputError(name + ": triangles " + std::to_string(pairs[0].first) + " and " +
-                     std::to_string(pairs[0].second) +
-                     " intersect; tet-projection needs surfaces that do not cross");
-}
+const std::string kMethod = "tet-projection";
 
 tet::ProjectionOptions projection_options(const MethodOptions& options) {
   const std::string axis = given<std::string>(options, "axis").value_or("auto");
@@ -94,8 +50,9 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
 MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request) {
   auto clock = Clock::now();
   report(request.progress, "checking the surfaces", 0.0);
-  const std::vector<tet::ProjectionSurface> surfaces = surfaces_of(domain, request.domain_name);
-  require_no_intersections(surfaces, request.domain_name);
+  const std::vector<tet::ProjectionSurface> surfaces =
+      triangulated_surfaces(domain, request.domain_name, kMethod);
+  require_no_intersections(surfaces, request.domain_name, kMethod);
   const double check_seconds = seconds_since(clock);
   // A prism too thin for doubles along one direction is not along another: with the axis
   // left to the method, a mesh that rounding cannot keep positive is made again along a
@@ -144,7 +101,7 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
 }
 
 const Registration registered{MesherInfo{
-    .name = "tet-projection",
+    .name = kMethod,
     .description = "tetrahedra filling triangulated surfaces by projection, exact (never fails)",
     .resolution = Resolution::surface,
     .octree = false,

@@ -1,0 +1,111 @@
+// tet-front: the advancing-front mesher (mesh/tet/front, front.hpp) on a domain's triangulated
+// surfaces, with its shape figures.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "registration.hpp"
+#include "tet_surfaces.hpp"
+#include "volmesh/core/convert.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
+#include "volmesh/quality/histogram.hpp"
+#include "volmesh/quality/tet_metrics.hpp"
+#include "volmesh/tet/front.hpp"
+
+namespace volmesh::meshers {
+
+namespace {
+
+const std::string kMethod = "tet-front";
+// The min-dihedral histogram: 10° bins over [0°, 90°].
+constexpr double kDihedralBinDegrees = 10.0;
+constexpr int kDihedralBins = 9;
+constexpr int kMinAuxRatio = 2, kMaxAuxRatio = 40;
+
+nlohmann::json shape_of(const TetMesh& m) {
+  std::vector<double> min_dihedral, max_dihedral, radius_edge;
+  for (const auto& c : m.cells) {
+    const TetMetrics q = tet_metrics(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]);
+    min_dihedral.push_back(q.min_dihedral_deg);
+    max_dihedral.push_back(q.max_dihedral_deg);
+    radius_edge.push_back(q.radius_edge_ratio);
+  }
+  const MetricSummary low = summarize(
+      "min_dihedral", min_dihedral,
+      make_histogram(0.0, kDihedralBinDegrees * kDihedralBins, kDihedralBins));
+  const MetricSummary high = summarize("max_dihedral", max_dihedral, make_histogram(0, 180, 1));
+  const MetricSummary re = summarize("radius_edge", radius_edge, make_histogram(0, 1, 1));
+  return {{"min_dihedral_deg", low.min},
+          {"max_dihedral_deg", high.max},
+          {"radius_edge", {{"max", re.max}, {"mean", re.mean}}},
+          {"min_dihedral_histogram",
+           {{"bin_deg", kDihedralBinDegrees}, {"counts", low.histogram.counts}}}};
+}
+
+MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
+  auto clock = Clock::now();
+  report(request.progress, "checking the surfaces", 0.0);
+  const std::vector<tet::ProjectionSurface> surfaces =
+      triangulated_surfaces(domain, request.domain_name, kMethod);
+  const double size = request.size.value_or(0.0);
+  if (!(size > 0.0) || !std::isfinite(size))
+    throw InputError(kMethod + ": --size " + std::to_string(size) + " must be positive and finite");
+  require_no_intersections(surfaces, request.domain_name, kMethod);
+  const double check_seconds = seconds_since(clock);
+  tet::FrontOptions options{.size = size};
+  if (const auto n = given<std::int64_t>(request.options, "aux-ratio"))
+    options.aux_ratio = static_cast<int>(*n);
+  if (const auto k = given<std::int64_t>(request.options, "stop-after")) options.stop_after = *k;
+  const tet::FrontResult front =
+      tet::tetrahedralize_by_front(surfaces, options, part_of(request.progress, 0.05, 1.0));
+  const tet::FrontStats& s = front.stats;
+  MeshResult r;
+  r.mesh = to_poly_mesh(front.mesh);
+  r.h = size;
+  nlohmann::json stages = {{"check", check_seconds}};
+  for (const auto& [stage, seconds] : s.seconds) stages[stage] = seconds;
+  r.summary = {{"tets", s.tets},
+               {"nodes", s.nodes},
+               {"aux_ratio", options.aux_ratio},
+               {"front", {{"tets", s.front_tets},
+                          {"new_nodes", s.new_nodes},
+                          {"existing_node_tets", s.existing_node_tets},
+                          {"relaxed_tets", s.relaxed_tets},
+                          {"aux_points", s.aux_points},
+                          {"aux_deleted", s.aux_deleted}}},
+               {"fallback", {{"stalls", s.stalls},
+                             {"cavity_faces", s.cavity_faces},
+                             {"tets", s.fallback_tets}}},
+               {"shape", shape_of(front.mesh)},
+               {"stage_seconds", stages}};
+  return r;
+}
+
+const Registration registered{MesherInfo{
+    .name = kMethod,
+    .description = "quality tetrahedra of size h by advancing front, boundary triangles kept "
+                   "(stalls closed by projection: never fails)",
+    .resolution = Resolution::size,
+    .octree = false,
+    .options = {{.name = "aux-ratio",
+                 .help = "auxiliary points at h / n (default " +
+                         std::to_string(tet::kDefaultAuxRatio) + ")",
+                 .type = OptionSpec::Type::integer,
+                 .min = kMinAuxRatio,
+                 .max = kMaxAuxRatio},
+                {.name = "stop-after",
+                 .help = "testing: stop each region's front after N tets, as if it stalled, so "
+                         "that the rest is closed by the fallback",
+                 .type = OptionSpec::Type::integer,
+                 .min = 0,
+                 .max = 1e12}},
+    .default_domain = "builtin:cube-inclusion",
+    .default_space = "p1",
+    .run = mesh_tet_front,
+}};
+
+}  // namespace
+
+}  // namespace volmesh::meshers

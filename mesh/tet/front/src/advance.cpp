@@ -1,0 +1,364 @@
+#include "advance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "aux_grid.hpp"
+#include "face_grid.hpp"
+#include "predicates.hpp"
+
+namespace volmesh::tet::front {
+
+namespace {
+
+using Tri = std::array<Index, 3>;
+using Tet = std::array<Index, 4>;
+
+// The solid-angle count is taken on a sub-lattice of the auxiliary grid with about this many
+// points along the ball's radius: an estimate that costs the same for any n.
+constexpr double kSolidAngleSamplesPerRadius = 6.0;
+// New-node heights tried: H, 0.75 H, ..., down to 0.75^kMaxShrinks H.
+constexpr int kMaxShrinks = 8;
+// 6√2: volume / (largest product of the three edges at a corner) times this is 1 for the
+// regular tet.
+const double kQualityScale = 6.0 * std::sqrt(2.0);
+// No tet of lower quality is made, in any pass: four corners on one plane up to rounding
+// (a rotated cube's face) are exactly positive or negative by chance, and their tet is flat.
+constexpr double kMinQuality = 1e-3;
+// An existing front node is taken as the fourth corner at once when its tet is at least this
+// good (1 = regular); a worse one only when no new node does better. The paper takes any
+// existing node first; this keeps the slivers four front nodes can make out of the mesh.
+constexpr double kGoodQuality = 0.35;
+// Faces of a tet, outward (element_mesh.hpp).
+constexpr std::array<std::array<int, 3>, 4> kFaces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+// Front faces fetched around a tet's box: a margin for the faces' own extent is not needed
+// (the grid lists a face in every cell its box overlaps).
+
+// An oriented triangle with its smallest corner first: the same key for each rotation.
+Tri canonical(const Tri& t) {
+  const int m = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+  return {t[m], t[(m + 1) % 3], t[(m + 2) % 3]};
+}
+
+struct TriHash {
+  std::size_t operator()(const Tri& t) const {
+    std::size_t h = static_cast<std::size_t>(t[0]);
+    h = h * 1000003U ^ static_cast<std::size_t>(t[1]);
+    return h * 1000003U ^ static_cast<std::size_t>(t[2]);
+  }
+};
+
+double quality(const std::array<Vec3, 4>& p, double volume) {
+  double worst = 0.0;
+  for (int v = 0; v < 4; ++v) {
+    double product = 1.0;
+    for (int w = 0; w < 4; ++w)
+      if (w != v) product *= (p[w] - p[v]).norm();
+    worst = std::max(worst, product);
+  }
+  return kQualityScale * volume / worst;
+}
+
+// The paper's four tests, or the exact ones only (positive, no front node inside, no front
+// edge or face crossed).
+enum class Tests { all, exact };
+
+class Front {
+ public:
+  Front(std::vector<Vec3>& points, const std::vector<Tri>& faces, const FrontOptions& options)
+      : pts_(points), h_(options.size), vmax_(kMaxVolume * h_ * h_ * h_) {
+    aux_ = make_aux_grid(points, faces, h_ / options.aux_ratio);
+    stride_ = std::max(1, static_cast<int>(std::lround(kSolidAngleRadius * options.aux_ratio /
+                                                       kSolidAngleSamplesPerRadius)));
+    Vec3 lo = points[faces.front()[0]], hi = lo;
+    for (const Tri& t : faces)
+      for (const Index v : t) {
+        lo = lo.cwiseMin(points[v]);
+        hi = hi.cwiseMax(points[v]);
+      }
+    grid_ = make_face_grid(lo, hi, h_);
+    for (const Tri& t : faces) add_face(t);
+  }
+
+  const AuxGrid& aux() const { return aux_; }
+  long long live_faces() const { return live_faces_; }
+
+  // The live faces, in order of creation.
+  std::vector<Tri> remaining() const {
+    std::vector<Tri> out;
+    for (std::size_t f = 0; f < faces_.size(); ++f)
+      if (live_[f]) out.push_back(faces_[f]);
+    return out;
+  }
+
+  // The face to advance from: the front node with the least estimate, then its face with the
+  // least sum over its corners; faces that failed since the last tet are passed over.
+  // kNoIndex when every live face has failed.
+  Index select() const {
+    for (const auto& [estimate, v] : order_) {
+      Index best = kNoIndex;
+      long long best_sum = 0;
+      for (const Index f : node_faces_[v]) {
+        if (!live_[f] || failed_[f]) continue;
+        const Tri& t = faces_[f];
+        const long long sum = estimate_[t[0]] + estimate_[t[1]] + estimate_[t[2]];
+        if (best == kNoIndex || sum < best_sum) {
+          best = f;
+          best_sum = sum;
+        }
+      }
+      if (best != kNoIndex) return best;
+    }
+    return kNoIndex;
+  }
+
+  // The best tet on face f, or false when none passes.
+  bool advance(Index f, RegionFront& out) {
+    const Tri t = faces_[f];
+    const std::array<Vec3, 3> p{pts_[t[0]], pts_[t[1]], pts_[t[2]]};
+    const double reach = kCandidateRadius * h_;
+    const std::set<Index> near = nodes_near(t, reach);
+    const auto [existing, existing_q] = best_existing(t, near, reach, Tests::all);
+    if (existing != kNoIndex && existing_q >= kGoodQuality) {
+      ++out.existing_node_tets;
+      add_tet({t[0], t[1], t[2], existing}, out);
+      return true;
+    }
+    // A new node above the face's barycentre.
+    const Vec3 cross = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double area = 0.5 * cross.norm();
+    const Vec3 normal = cross.normalized(), centre = (p[0] + p[1] + p[2]) / 3.0;
+    double height = std::min(3.0 * vmax_ / area, std::sqrt(area));
+    const Index id = static_cast<Index>(pts_.size());
+    for (int k = 0; k <= kMaxShrinks; ++k, height *= kShrink) {
+      const Vec3 q = centre + height * normal;
+      if (deleted_in_ball(aux_, q, kFreeBallRadius * aux_.step)) continue;
+      if (tet_quality(t, id, q, existing_q, Tests::all) <= 0.0) continue;
+      pts_.push_back(q);
+      ++out.new_nodes;
+      add_tet({t[0], t[1], t[2], id}, out);
+      return true;
+    }
+    if (existing != kNoIndex) {
+      ++out.existing_node_tets;
+      add_tet({t[0], t[1], t[2], existing}, out);
+      return true;
+    }
+    // Beyond the paper: before the face counts as failed, its existing candidates are tried
+    // again with the exact tests only (no volume limit, no auxiliary points), so that a
+    // cavity left a little too large for Vmax, or whose auxiliary points were deleted along
+    // a face, still closes.
+    const Index relaxed = best_existing(t, near, reach, Tests::exact).first;
+    if (relaxed != kNoIndex) {
+      ++out.existing_node_tets;
+      ++out.relaxed_tets;
+      add_tet({t[0], t[1], t[2], relaxed}, out);
+      return true;
+    }
+    return false;
+  }
+
+  // The front nodes within `reach` of face t's box, t's corners excepted.
+  std::set<Index> nodes_near(const Tri& t, double reach) {
+    Vec3 lo = pts_[t[0]].cwiseMin(pts_[t[1]]).cwiseMin(pts_[t[2]]);
+    Vec3 hi = pts_[t[0]].cwiseMax(pts_[t[1]]).cwiseMax(pts_[t[2]]);
+    std::set<Index> near;
+    for (const Index g :
+         faces_near(grid_, lo - Vec3::Constant(reach), hi + Vec3::Constant(reach), live_))
+      for (const Index v : faces_[g])
+        if (v != t[0] && v != t[1] && v != t[2]) near.insert(v);
+    return near;
+  }
+
+  // The best tet joining t to a node of `near` within `reach` of its corners, and its quality
+  // (kNoIndex and 0 if none passes).
+  std::pair<Index, double> best_existing(const Tri& t, const std::set<Index>& near, double reach,
+                                         Tests tests) {
+    Index best = kNoIndex;
+    double best_q = 0.0;
+    for (const Index d : near) {
+      const Vec3& q = pts_[d];
+      if ((q - pts_[t[0]]).norm() > reach || (q - pts_[t[1]]).norm() > reach ||
+          (q - pts_[t[2]]).norm() > reach)
+        continue;
+      const double qd = tet_quality(t, d, q, best_q, tests);
+      if (qd > best_q) {
+        best = d;
+        best_q = qd;
+      }
+    }
+    return {best, best_q};
+  }
+
+  void mark_failed(Index f) {
+    failed_[f] = 1;
+    ++failed_live_;
+  }
+
+  bool all_failed() const { return failed_live_ == live_faces_; }
+
+ private:
+  // The quality of tet (t, d) with d at q if it passes every test and beats `floor`, else 0.
+  double tet_quality(const Tri& t, Index d, const Vec3& q, double floor, Tests tests) {
+    const std::array<Vec3, 4> p{pts_[t[0]], pts_[t[1]], pts_[t[2]], q};
+    if (!positive(p[0], p[1], p[2], p[3])) return 0.0;
+    const double volume = (p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) / 6.0;
+    if (tests == Tests::all && volume > vmax_) return 0.0;
+    const double qd = quality(p, volume);
+    if (qd <= std::max(floor, kMinQuality)) return 0.0;
+    // A front face on the tet facing out of it: the other side of it is meshed already.
+    const Tet corners{t[0], t[1], t[2], d};
+    for (const auto& f : kFaces)
+      if (by_key_.count(canonical({corners[f[0]], corners[f[1]], corners[f[2]]}))) return 0.0;
+    const std::array<Corner, 4> tet{Corner{p[0], t[0]}, Corner{p[1], t[1]}, Corner{p[2], t[2]},
+                                    Corner{q, d}};
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& x : p) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    for (const Index g : faces_near(grid_, lo, hi, live_)) {
+      if (!live_[g]) continue;
+      const Tri& u = faces_[g];
+      if (tet_meets_triangle(tet, {Corner{pts_[u[0]], u[0]}, Corner{pts_[u[1]], u[1]},
+                                   Corner{pts_[u[2]], u[2]}}))
+        return 0.0;
+    }
+    if (tests == Tests::all && deleted_strictly_inside(aux_, p)) return 0.0;
+    return qd;
+  }
+
+  void add_tet(const Tet& tet, RegionFront& out) {
+    out.tets.push_back(tet);
+    std::array<Vec3, 4> p;
+    for (int i = 0; i < 4; ++i) p[i] = pts_[tet[i]];
+    std::vector<Vec3> deleted;
+    out.aux_deleted += delete_covered(aux_, p, stride_, deleted);
+    // Each face of the tet closes the front face it matches (facing into the tet), or opens
+    // a new one facing out of it.
+    for (const auto& f : kFaces) {
+      const Tri face{tet[f[0]], tet[f[1]], tet[f[2]]};
+      const auto it = by_key_.find(canonical({face[0], face[2], face[1]}));
+      if (it != by_key_.end())
+        remove_face(it->second);
+      else
+        add_face(face);
+    }
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& x : p) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    // A failed face may advance once the front near it has changed: within reach of a
+    // fourth corner of it.
+    const Vec3 candidates = Vec3::Constant(kCandidateRadius * h_);
+    for (const Index g : faces_near(grid_, lo - candidates, hi + candidates, live_))
+      if (live_[g] && failed_[g]) {
+        failed_[g] = 0;
+        --failed_live_;
+      }
+    // The solid-angle estimates of the front nodes whose ball meets the tet, less the points
+    // deleted in it.
+    const double radius = kSolidAngleRadius * h_;
+    const Vec3 reach = Vec3::Constant(radius);
+    std::set<Index> stale;
+    for (const Index g : faces_near(grid_, lo - reach, hi + reach, live_))
+      stale.insert(faces_[g].begin(), faces_[g].end());
+    for (const Index v : stale) {
+      long long gone = 0;
+      for (const Vec3& x : deleted)
+        if ((x - pts_[v]).squaredNorm() <= radius * radius) ++gone;
+      if (gone == 0) continue;
+      order_.erase({estimate_[v], v});
+      estimate_[v] -= gone;
+      order_.insert({estimate_[v], v});
+    }
+  }
+
+  long long estimate(Index v) const {
+    return count_live_in_ball(aux_, pts_[v], kSolidAngleRadius * h_, stride_);
+  }
+
+  void add_face(const Tri& t) {
+    const Index f = static_cast<Index>(faces_.size());
+    faces_.push_back(t);
+    live_.push_back(1);
+    failed_.push_back(0);
+    ++live_faces_;
+    by_key_.emplace(canonical(t), f);
+    if (pts_.size() > node_faces_.size()) {
+      node_faces_.resize(pts_.size());
+      node_live_.resize(pts_.size(), 0);
+      estimate_.resize(pts_.size(), 0);
+    }
+    Vec3 lo = pts_[t[0]], hi = lo;
+    for (const Index v : t) {
+      lo = lo.cwiseMin(pts_[v]);
+      hi = hi.cwiseMax(pts_[v]);
+      node_faces_[v].push_back(f);
+      if (node_live_[v]++ == 0) {
+        estimate_[v] = estimate(v);
+        order_.insert({estimate_[v], v});
+      }
+    }
+    insert_face(grid_, f, lo, hi);
+  }
+
+  void remove_face(Index f) {
+    live_[f] = 0;
+    --live_faces_;
+    if (failed_[f]) --failed_live_;
+    by_key_.erase(canonical(faces_[f]));
+    for (const Index v : faces_[f]) {
+      auto& list = node_faces_[v];
+      list.erase(std::find(list.begin(), list.end(), f));
+      if (--node_live_[v] == 0) order_.erase({estimate_[v], v});
+    }
+  }
+
+  std::vector<Vec3>& pts_;
+  double h_, vmax_;
+  int stride_ = 1;
+  AuxGrid aux_;
+  FaceGrid grid_;
+  std::vector<Tri> faces_;
+  std::vector<char> live_, failed_;
+  long long live_faces_ = 0, failed_live_ = 0;
+  std::unordered_map<Tri, Index, TriHash> by_key_;
+  std::vector<std::vector<Index>> node_faces_;  // by point: its live faces
+  std::vector<int> node_live_;
+  std::vector<long long> estimate_;
+  std::set<std::pair<long long, Index>> order_;  // the front nodes by estimate
+};
+
+// Progress is reported every this many tets.
+constexpr std::size_t kProgressEvery = 256;
+
+}  // namespace
+
+RegionFront advance_front(std::vector<Vec3>& points, const std::vector<Tri>& faces,
+                          const FrontOptions& options, const Progress& progress) {
+  RegionFront out;
+  Front front(points, faces, options);
+  out.aux_points = front.aux().initial;
+  while (front.live_faces() > 0) {
+    if (options.stop_after >= 0 && static_cast<long long>(out.tets.size()) >= options.stop_after)
+      break;
+    const Index f = front.select();
+    if (f == kNoIndex) break;  // a stall: no face can advance
+    if (!front.advance(f, out)) {
+      front.mark_failed(f);
+      continue;
+    }
+    if (out.tets.size() % kProgressEvery == 0 && front.aux().initial > 0)
+      report(progress, "advancing the front",
+             1.0 - double(front.aux().live) / double(front.aux().initial));
+  }
+  out.cavity = front.remaining();
+  return out;
+}
+
+}  // namespace volmesh::tet::front

@@ -1,0 +1,96 @@
+// tetrahedralize_by_front: one front per surface (its inside, less the surfaces nested
+// directly in it), then the stalled cavities closed by projection.
+#include "volmesh/tet/front.hpp"
+
+#include <string>
+
+#include "advance.hpp"
+#include "fallback.hpp"
+#include "nesting.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
+
+namespace volmesh::tet {
+
+namespace {
+
+using Tri = std::array<Index, 3>;
+
+// More auxiliary points than this (a gigabit) is an absurd h for the domain.
+constexpr double kMaxAuxPoints = 1e9;
+
+}  // namespace
+
+FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
+                                    const FrontOptions& options, const Progress& progress) {
+  if (!(options.size > 0.0))
+    throw InputError("tet-front: --size " + std::to_string(options.size) + " must be positive");
+  FrontResult r;
+  TetMesh& m = r.mesh;
+  std::vector<std::vector<Tri>> outward;
+  for (const ProjectionSurface& s : surfaces) {
+    const Index first = m.num_points();
+    m.points.insert(m.points.end(), s.surface.points.begin(), s.surface.points.end());
+    std::vector<Tri> tris;
+    for (const Tri& t : s.surface.triangles) tris.push_back({first + t[0], first + t[1], first + t[2]});
+    outward.push_back(std::move(tris));
+  }
+  for (std::size_t s = 0; s < surfaces.size(); ++s) {
+    Vec3 lo = m.points[outward[s].front()[0]], hi = lo;
+    for (const Tri& t : outward[s])
+      for (const Index v : t) {
+        lo = lo.cwiseMin(m.points[v]);
+        hi = hi.cwiseMax(m.points[v]);
+      }
+    const double step = options.size / options.aux_ratio;
+    const Vec3 cells = (hi - lo) / step;
+    if ((cells.x() + 3) * (cells.y() + 3) * (cells.z() + 3) > kMaxAuxPoints)
+      throw InputError("tet-front: --size " + std::to_string(options.size) + " is too small for " +
+                       surfaces[s].name + " (more than 1e9 auxiliary points at --aux-ratio " +
+                       std::to_string(options.aux_ratio) + ")");
+  }
+  const std::vector<Index> parent = front::parents(m.points, outward);
+  double front_seconds = 0.0, fallback_seconds = 0.0;
+  for (std::size_t s = 0; s < surfaces.size(); ++s) {
+    auto clock = Clock::now();
+    std::vector<Tri> faces;
+    for (const Tri& t : outward[s]) faces.push_back({t[0], t[2], t[1]});
+    for (std::size_t c = 0; c < surfaces.size(); ++c)
+      if (parent[c] == static_cast<Index>(s))
+        faces.insert(faces.end(), outward[c].begin(), outward[c].end());
+    const double begin = double(s) / double(surfaces.size());
+    front::RegionFront region = front::advance_front(
+        m.points, faces, options,
+        part_of(progress, begin, begin + 1.0 / double(surfaces.size()), surfaces[s].name + ": "));
+    r.stats.front_tets += static_cast<long long>(region.tets.size());
+    r.stats.new_nodes += region.new_nodes;
+    r.stats.existing_node_tets += region.existing_node_tets;
+    r.stats.relaxed_tets += region.relaxed_tets;
+    r.stats.aux_points += region.aux_points;
+    r.stats.aux_deleted += region.aux_deleted;
+    front_seconds += seconds_since(clock);
+    clock = Clock::now();
+    if (!region.cavity.empty()) {
+      ++r.stats.stalls;
+      r.stats.cavity_faces += static_cast<long long>(region.cavity.size());
+      const auto closing = front::close_cavity(m.points, region.cavity);
+      r.stats.fallback_tets += static_cast<long long>(closing.size());
+      region.tets.insert(region.tets.end(), closing.begin(), closing.end());
+    }
+    fallback_seconds += seconds_since(clock);
+    m.cells.insert(m.cells.end(), region.tets.begin(), region.tets.end());
+    m.cell_region.insert(m.cell_region.end(), region.tets.size(), surfaces[s].label);
+  }
+  for (std::size_t s = 0; s < surfaces.size(); ++s) {
+    m.tag_names.push_back(surfaces[s].name);
+    if (!surfaces[s].outermost) continue;
+    m.boundary_faces.insert(m.boundary_faces.end(), outward[s].begin(), outward[s].end());
+    m.boundary_tag.insert(m.boundary_tag.end(), outward[s].size(), static_cast<Index>(s));
+  }
+  r.stats.tets = m.num_cells();
+  r.stats.nodes = m.num_points();
+  r.stats.seconds = {{"front", front_seconds}, {"fallback", fallback_seconds}};
+  return r;
+}
+
+}  // namespace volmesh::tet

@@ -1,0 +1,83 @@
+#include "predicates.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace volmesh::tet::front {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P = K::Point_3;
+
+// |det(b - a, c - a, q - a)| / (|(b - a) x (c - a)| |q - a|) below this: q nearly in the
+// plane of abc (the sine of the angle between aq and the plane).
+constexpr double kNearlyFlat = 1e-6;
+
+P cg(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+bool is_one_of(Index id, const Corner* c, int n) {
+  for (int i = 0; i < n; ++i)
+    if (c[i].id == id) return true;
+  return false;
+}
+
+// Whether the closed segment s0 s1 meets the closed triangle t beyond their shared corners.
+bool segment_meets_triangle(const Corner& s0, const Corner& s1, const std::array<Corner, 3>& t) {
+  const bool shared0 = is_one_of(s0.id, t.data(), 3), shared1 = is_one_of(s1.id, t.data(), 3);
+  if (shared0 && shared1) return false;  // an edge of the triangle
+  if (!shared0 && !shared1)
+    return CGAL::do_intersect(K::Segment_3(cg(s0.p), cg(s1.p)),
+                              K::Triangle_3(cg(t[0].p), cg(t[1].p), cg(t[2].p)));
+  // One corner a shared: off the plane, the segment leaves it at a; in the plane, it enters
+  // the triangle iff its other end q lies in the closed wedge of the triangle at a. Nearly in
+  // the plane counts as in it (a conservative refusal): a tet face lying over a front face up
+  // to rounding would leave a flat cavity no tet can fill.
+  const Corner& q = shared0 ? s1 : s0;
+  const Index a_id = shared0 ? s0.id : s1.id;
+  int ia = 0;
+  while (t[ia].id != a_id) ++ia;
+  const Vec3 &a = t[ia].p, &b = t[(ia + 1) % 3].p, &c = t[(ia + 2) % 3].p;
+  const Vec3 u = b - a, v = c - a, w = q.p - a, n = u.cross(v);
+  const double scale = n.norm() * w.norm();
+  if (std::abs(n.dot(w)) > kNearlyFlat * scale) return false;
+  const double tolerance = kNearlyFlat * scale * std::max(u.norm(), v.norm());
+  return u.cross(w).dot(n) >= -tolerance && w.cross(v).dot(n) >= -tolerance;
+}
+
+// Whether p lies in the closed positive tet.
+bool in_closed_tet(const std::array<Corner, 4>& t, const Vec3& p) {
+  for (int i = 0; i < 4; ++i) {
+    std::array<P, 4> q{cg(t[0].p), cg(t[1].p), cg(t[2].p), cg(t[3].p)};
+    q[i] = cg(p);
+    if (CGAL::orientation(q[0], q[1], q[2], q[3]) == CGAL::NEGATIVE) return false;
+  }
+  return true;
+}
+
+constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+constexpr std::array<std::array<int, 3>, 4> kFaces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+
+}  // namespace
+
+bool positive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return CGAL::orientation(cg(a), cg(b), cg(c), cg(d)) == CGAL::POSITIVE;
+}
+
+bool tet_meets_triangle(const std::array<Corner, 4>& tet, const std::array<Corner, 3>& tri) {
+  for (const Corner& v : tri)
+    if (!is_one_of(v.id, tet.data(), 4) && in_closed_tet(tet, v.p)) return true;
+  for (const auto& e : kTetEdges)
+    if (segment_meets_triangle(tet[e[0]], tet[e[1]], tri)) return true;
+  for (const auto& f : kFaces) {
+    const std::array<Corner, 3> face{tet[f[0]], tet[f[1]], tet[f[2]]};
+    for (int e = 0; e < 3; ++e)
+      if (segment_meets_triangle(tri[e], tri[(e + 1) % 3], face)) return true;
+  }
+  return false;
+}
+
+}  // namespace volmesh::tet::front

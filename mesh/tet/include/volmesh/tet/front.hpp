@@ -1,0 +1,68 @@
+#pragma once
+// Quality tetrahedra by advancing front with an auxiliary point array (docs/methods.md,
+// "tet-front"): fills closed, outward, non-self-intersecting triangulated surfaces with tets
+// of target edge h, keeping the surface triangles exactly.
+//
+// Each region (the inside of its surfaces, outside the ones nested in it) is meshed on its own:
+//  - auxiliary points on a grid of step h/n, one bit each, alive inside the region;
+//  - the front starts as the region's boundary triangles, facing into the region;
+//  - the front node with the fewest live auxiliary points within √2·h (the smallest solid
+//    angle) is taken, then its front face with the least sum over its corners;
+//  - the fourth corner is the best existing front node within √3·h of the face's corners, or
+//    else a new node at the face's barycentre + H along its normal, H = min(3 Vmax / S, √S)
+//    shrunk by 0.75 until it fits, in a ball of radius 2h/n free of deleted points;
+//  - a tet is refused if it holds a deleted auxiliary point strictly inside, a front node, is
+//    crossed by a front edge or crosses a front face (exact predicates), is not positive, or
+//    exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
+//    corner) is kept; the auxiliary points it covers are deleted and the front updated.
+// When no face of the front can advance (a stall), the rest of the region is closed by the
+// projection mesher (projection.hpp) and merged in when its boundary matches the front's
+// triangles; `stalls` and `fallback_tets` say how often and how much.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/progress.hpp"
+#include "volmesh/tet/projection.hpp"
+
+namespace volmesh::tet {
+
+inline constexpr int kDefaultAuxRatio = 12;
+
+struct FrontOptions {
+  double size = 0.0;                // h, the target edge
+  int aux_ratio = kDefaultAuxRatio;  // n: auxiliary points at h / n
+  // A test hook: the front stops after this many tets per region, as if it stalled (-1: never).
+  long long stop_after = -1;
+};
+
+struct FrontStats {
+  long long tets = 0, nodes = 0;
+  long long front_tets = 0;     // made by the advancing front
+  long long new_nodes = 0;      // placed by the front (beyond the surface points)
+  long long existing_node_tets = 0;  // tets whose fourth corner was already a front node
+  // Of those, tets that passed the exact tests only (beyond Vmax or over deleted auxiliary
+  // points), tried before a face counts as failed.
+  long long relaxed_tets = 0;
+  long long aux_points = 0, aux_deleted = 0;  // live inside the regions at the start; deleted
+  long long stalls = 0;         // regions whose front could not advance further
+  long long fallback_tets = 0;  // tets the projection mesher made in the stalled cavities
+  long long cavity_faces = 0;   // front faces handed to the projection mesher
+  // Seconds by stage: aux (the auxiliary points), front, fallback.
+  std::vector<std::pair<std::string, double>> seconds;
+};
+
+struct FrontResult {
+  // Points: the surfaces' points in their order, then the new nodes. Boundary faces: the
+  // outermost surfaces' triangles, tagged by surface.
+  TetMesh mesh;
+  FrontStats stats;
+};
+
+// Throws InputError when h is not positive or too small for the domain (more than
+// kMaxAuxPoints auxiliary points), or when a stalled cavity cannot be closed conformingly.
+FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
+                                    const FrontOptions& options, const Progress& progress = {});
+
+}  // namespace volmesh::tet
