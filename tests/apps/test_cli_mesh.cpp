@@ -69,7 +69,9 @@ TEST(CliMesh, SameBytesForOneAndTwoThreads) {
   for (const std::string run : {"staircase builtin:primitives --level 4",
                                 "cutcell builtin:primitives --level 4",
                                 "cutcell builtin:layers6 --level 4",
-                                "hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 4"}) {
+                                "hexdc " VOLMESH_TEST_DATA "/domains/inner_cube.off --level 4",
+                                "tet-projection " VOLMESH_CGAL_DATA "/meshes/anchor.off",
+                                "tet-front " VOLMESH_CGAL_DATA "/meshes/sphere.off --size 0.2"}) {
     for (const std::string t : {"1", "2"}) {
       const fs::path out = dir / (t + ".vtu");
       const auto r = run_volmesh("mesh " + run + " --threads " + t + " -o " + out.string(), dir);

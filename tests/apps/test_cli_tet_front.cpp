@@ -60,18 +60,6 @@ TEST(CliTetFront, AStoppedFrontIsClosedByTheFallback) {
   EXPECT_NEAR(v.total_volume, 0.125, 1e-15);
 }
 
-TEST(CliTetFront, SameBytesForOneAndTwoThreads) {
-  const fs::path dir = test::scratch_dir("tet-front-threads");
-  const std::string surface = VOLMESH_CGAL_DATA "/meshes/sphere.off";
-  for (const char* threads : {"1", "2"}) {
-    const auto r = run_volmesh("mesh tet-front " + surface + " --size 0.2 --threads " + threads +
-                                   " -o " + (dir / (std::string("t") + threads + ".vtu")).string(),
-                               dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  EXPECT_EQ(test::slurp(dir / "t1.vtu"), test::slurp(dir / "t2.vtu"));
-}
-
 TEST(CliTetFront, BadInputExits1WithOneLineAndNoOutput) {
   const fs::path dir = test::scratch_dir("tet-front-bad");
   const fs::path out = dir / "out.vtu";

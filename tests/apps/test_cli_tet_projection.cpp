@@ -81,18 +81,6 @@ TEST(CliTetProjection, TriesOtherDirectionsWhenRoundingFails) {
   EXPECT_FALSE(fs::exists(dir / "z.vtu"));
 }
 
-TEST(CliTetProjection, SameBytesForOneAndTwoThreads) {
-  const fs::path dir = test::scratch_dir("tet-projection-threads");
-  const std::string surface = VOLMESH_CGAL_DATA "/meshes/anchor.off";
-  for (const char* threads : {"1", "2"}) {
-    const auto r = run_volmesh("mesh tet-projection " + surface + " --threads " + threads +
-                                   " -o " + (dir / (std::string("t") + threads + ".vtu")).string(),
-                               dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  EXPECT_EQ(test::slurp(dir / "t1.vtu"), test::slurp(dir / "t2.vtu"));
-}
-
 // P1 on the projection's tets: the centres of the prisms are the only interior nodes.
 TEST(CliTetProjection, SolvesPoissonInP1) {
   const fs::path dir = test::scratch_dir("tet-projection-solve");
