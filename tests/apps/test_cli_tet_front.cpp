@@ -1,6 +1,6 @@
 // volmesh mesh tet-front end to end: the paper's example with its figures in --json, a valid
-// mesh as re-read with the enclosed volume, the fallback forced, the same bytes for any thread
-// count, and the refusals (exit 1, one line, no output).
+// mesh as re-read with the enclosed volume, the fallback forced, and the refusals (exit 1, one
+// line, no output). Same bytes for any thread count: CliMesh.SameBytesForOneAndTwoThreads.
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -1,6 +1,6 @@
 // volmesh mesh tet-projection end to end: exact figures in --json, the mesh as re-read, two
-// regions from nested surfaces, P1 on the tets, the same bytes for any thread count, and the
-// refusals (exit 1, one line, no output).
+// regions from nested surfaces, P1 on the tets, and the refusals (exit 1, one line, no
+// output). Same bytes for any thread count: CliMesh.SameBytesForOneAndTwoThreads.
 #include <gtest/gtest.h>
 
 #include <fstream>
