@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "cell_shapes.hpp"
+#include "refusals.hpp"
 #include "run_volmesh.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
@@ -497,13 +498,7 @@ TEST(CliMesh, BadInputExits1WithOneLineAndNoOutput) {
   // A tetrahedron with one face missing: an open surface.
   std::ofstream(dir / "open.off") << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
                                      "3 0 2 1\n3 0 1 3\n3 0 3 2\n";
-  for (const auto& [args, message] : cases) {
-    const auto r = run_volmesh(args + " -o " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 1) << args;
-    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
-    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
+  test::expect_refusals(cases, out, dir);
   const auto r = run_volmesh("mesh staircase builtin:ball --level 3 -o " + (dir / "x.txt").string(),
                              dir);
   EXPECT_EQ(r.exit_code, 1);

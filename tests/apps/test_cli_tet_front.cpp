@@ -8,6 +8,7 @@
 
 #include "../support/shell.hpp"
 #include "cell_shapes.hpp"
+#include "refusals.hpp"
 #include "run_volmesh.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -77,13 +78,7 @@ TEST(CliTetFront, BadInputExits1WithOneLineAndNoOutput) {
       {"mesh tet-front " + (dir / "crossing.off").string() + " --size 0.5", "triangles"},
       {"mesh tet-front " + (dir / "open.off").string() + " --size 0.5", "open.off"},
   };
-  for (const auto& [args, message] : cases) {
-    const auto r = run_volmesh(args + " -o " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 1) << args;
-    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
-    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
+  test::expect_refusals(cases, out, dir);
   // A size out of range is a usage error of the command line.
   for (const char* size : {"0", "-1"}) {
     const auto r = run_volmesh("mesh tet-front " + kCube + " --size " + size + " -o " + out.string(), dir);

@@ -8,6 +8,7 @@
 
 #include "../support/shell.hpp"
 #include "cell_shapes.hpp"
+#include "refusals.hpp"
 #include "run_volmesh.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
@@ -106,13 +107,7 @@ TEST(CliTetProjection, BadInputExits1WithOneLineAndNoOutput) {
       {"mesh tet-projection " + kCube + " --level 3", "no --level"},
       {"mesh tet-projection " + (dir / "crossing.off").string(), "intersect"},
   };
-  for (const auto& [args, message] : cases) {
-    const auto r = run_volmesh(args + " -o " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 1) << args;
-    EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;
-    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
+  test::expect_refusals(cases, out, dir);
   const auto usage = run_volmesh("mesh tet-projection " + kCube + " --axis w -o " + out.string(), dir);
   EXPECT_EQ(usage.exit_code, 2);
   EXPECT_FALSE(fs::exists(out));
