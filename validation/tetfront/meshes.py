@@ -29,8 +29,21 @@ SIX = 6  # a tet's volume is the triple product over six
 
 
 def read_surface(path):
-    mesh = meshio.read(path)
-    return mesh.points.astype(float), mesh.cells_dict["triangle"]
+    """An OFF file's vertices and triangles, read line by line as volmesh reads it: '#' starts
+    a comment, a header word (OFF, COFF, ...) may precede the counts on its line, a vertex line
+    may carry a colour after its three coordinates, and a polygon is split into the fan of its
+    first corner."""
+    lines = (line.split("#", 1)[0].split() for line in open(path, errors="replace"))
+    lines = [words for words in lines if words]
+    if lines[0][0].isalpha() or lines[0][0].endswith("OFF"):
+        lines[0] = lines[0][1:] or lines.pop(1)
+    vertex_count, face_count = int(lines[0][0]), int(lines[0][1])
+    points = np.array([[float(c) for c in words[:3]] for words in lines[1:1 + vertex_count]])
+    triangles = []
+    for words in lines[1 + vertex_count:1 + vertex_count + face_count]:
+        corners = [int(v) for v in words[1:1 + int(words[0])]]
+        triangles += [(corners[0], corners[i - 1], corners[i]) for i in range(2, len(corners))]
+    return points, np.array(triangles, dtype=np.int64)
 
 
 def mean_edge(path):

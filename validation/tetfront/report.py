@@ -28,8 +28,8 @@ def _hexdc_report():
 
 
 _HEXDC = _hexdc_report()
-table, write_rows, fmt, load_json, times, DASH = (_HEXDC.table, _HEXDC.write_rows, _HEXDC.fmt,
-                                                   _HEXDC.load_json, _HEXDC.times, _HEXDC.DASH)
+table, write_rows, fmt, load_json, DASH = (_HEXDC.table, _HEXDC.write_rows, _HEXDC.fmt,
+                                            _HEXDC.load_json, _HEXDC.DASH)
 
 TIMEOUT_EXIT = 124
 SIGNAL_EXIT = 128                                # a process killed by signal S exits 128 + S
@@ -44,6 +44,7 @@ CUBE_INCLUSION_VOLUME = 512.0                    # builtin:cube-inclusion is the
 HISTOGRAM_TOP_DEG = 70                           # a tet's min dihedral is at most 70.53°
 PEERS = (("tetgen", "TetGen"), ("gmsh-del3d", "Gmsh Delaunay"), ("gmsh-hxt", "Gmsh HXT"),
          ("netgen", "Netgen"), ("ours", "tet-front"))
+VOLMESH_ERROR = "volmesh: error: "              # the prefix of volmesh's one-line refusals
 LINE_SHOWN = 160                                 # characters of a refusal shown in a table
 SELF_INTERSECTION_PAIR = re.compile(r"triangles \d+ and \d+")
 
@@ -58,7 +59,13 @@ def message(out, name):
     lines = [l.strip() for l in (text(out, name, "err") + text(out, name, "out")).splitlines()
              if l.strip() and not l.startswith("Command exited")]
     errors = [l for l in lines if "error" in l.lower()]
-    return (errors or lines or ["(no message)"])[-1]
+    return (errors or lines or ["(no message)"])[-1].removeprefix(VOLMESH_ERROR)
+
+
+def wall_time(out, name):
+    """The process's wall time from /usr/bin/time's "%e %U %S" line, None while it runs."""
+    fields = text(out, name, "time").split()
+    return float(fields[-3]) if len(fields) >= 3 else None
 
 
 def mesher_seconds(out, name, tool, run):
@@ -78,7 +85,7 @@ def mesher_seconds(out, name, tool, run):
 def run_row(out, name, tool="ours"):
     """One run as a flat dict; status meshed, refused, time-out, no mesh or not run."""
     exit_text = text(out, name, "exit").strip()
-    wall = times(out, name)[0]
+    wall = wall_time(out, name)
     row = {"name": name, "status": "not run", "message": "", "wall_seconds": wall,
            "mesher_seconds": None, "size": None, "tets": None, "nodes": None, "valid": None,
            "non_positive": None, "volume": None, "min_dihedral": None, "max_dihedral": None,
@@ -299,7 +306,11 @@ def sweep(out):
 
 def excluded(out, swept):
     """The candidates `volmesh info` kept out of the sweep, with its reason."""
-    rest = [s for s in text(out, "sweep", "candidates").split() if s not in swept]
+    candidates = [s for s in text(out, "sweep", "candidates").split() if s not in swept]
+    rest = [s for s in candidates if (out / f"sweep-{s}.info.json").exists()]
+    unreached = [s for s in candidates if s not in rest]
+    if unreached:
+        print(f"Not reached (the sweep was stopped before them): {', '.join(unreached)}.\n")
     print(f"Not swept: {len(rest)} files that are not closed, manifold surfaces free of "
           "self-intersections (`volmesh info`'s reason):\n")
     for name in rest:
