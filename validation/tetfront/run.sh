@@ -91,6 +91,12 @@ ours() {  # name domain size seconds
   check "$1" "$mesh"
 }
 
+# A finished peer's tets as VTU; a file the converter cannot read leaves no mesh (the row
+# then says "no mesh" with the tool's last line).
+convert() {  # peer-output vtu
+  "$PY" "$HERE/meshes.py" vtu "$1" "$2" 2>> "${2%.vtu}.err" || rm -f "$2"
+}
+
 # TetGen on a copy of the surface (its name without a dot before .off: TetGen reads a.0.off
 # as iteration 0 of a).
 tetgen_run() {  # model
@@ -99,7 +105,9 @@ tetgen_run() {  # model
   cp "$MESHES/$1.off" "$dir/$base.off"
   timed "tetgen-$1" "$TIMEOUT" tetgen "$TETGEN_SWITCHES" "$dir/$base.off"
   rm -f "$OUT/tetgen-$1.vtu"
-  [ -f "$dir/$base.1.ele" ] && "$PY" "$HERE/meshes.py" vtu "$dir/$base.1.node" "$OUT/tetgen-$1.vtu"
+  if [ "$(cat "$OUT/tetgen-$1.exit")" = 0 ]; then
+    convert "$dir/$base.1.node" "$OUT/tetgen-$1.vtu"
+  fi
   check "tetgen-$1" "$OUT/tetgen-$1.vtu"
   rm -f "$dir/$base".*
 }
@@ -111,7 +119,9 @@ gmsh_run() {  # model algorithm (del3d | hxt)
   printf 'Merge "%s";\nSurface Loop(1) = {1};\nVolume(1) = {1};\n' "$OUT/$1.stl" > "$geo"
   rm -f "$OUT/$name.msh" "$OUT/$name.vtu"
   timed "$name" "$TIMEOUT" gmsh "$geo" -3 -nt 1 -algo "$2" -format msh22 -o "$OUT/$name.msh"
-  [ -f "$OUT/$name.msh" ] && "$PY" "$HERE/meshes.py" vtu "$OUT/$name.msh" "$OUT/$name.vtu"
+  if [ "$(cat "$OUT/$name.exit")" = 0 ]; then
+    convert "$OUT/$name.msh" "$OUT/$name.vtu"
+  fi
   rm -f "$OUT/$name.msh"
   check "$name" "$OUT/$name.vtu"
 }
@@ -151,8 +161,10 @@ ours_matched() {  # model
     ours "ours-$1" "$MESHES/$1.off" "$h" "$TIMEOUT"
     tets=$(tets_of "ours-$1")
     echo "$h $tets" >> "$OUT/ours-$1.sizes"
-    [ -z "$(size_of "$1")" ] && [ "$pass" -lt "$MATCH_PASSES" ] && [ "$tets" -gt 0 ] \
-      && [ "$target" -gt 0 ] || break
+    if [ -n "$(size_of "$1")" ] || [ "$pass" -ge "$MATCH_PASSES" ] || [ "$tets" -eq 0 ] \
+       || [ "$target" -eq 0 ]; then
+      break
+    fi
     h=$("$PY" -c "import sys; h, n, t, tol = map(float, sys.argv[1:])
 r = n / t
 print(repr(h * r ** (1 / 3)) if r > tol or r < 1 / tol else '')" "$h" "$tets" "$target" \
