@@ -27,6 +27,8 @@ constexpr double kDegenerateShape = 8.0 * std::numeric_limits<double>::epsilon()
 // rational, so no rule is exact there; the errors' degree-5 rule serves the stiffness and the
 // loads too, and its points are the ones the Jacobian is checked at.
 constexpr int kCurvedDegree = 5;
+// Boundary faces' data (Neumann fluxes, tractions) are integrated to degree 5.
+constexpr int kFaceDegree = 5;
 
 class TetSpace final : public FeSpace {
  public:
@@ -109,13 +111,12 @@ class TetSpace final : public FeSpace {
   void face_points(Index f, FacePoints& out) const override {
     out.clear();
     face_nodes(f, out.nodes);
-    if (quadratic_ && std::any_of(out.nodes.begin() + 3, out.nodes.end(),
-                                  [&](Index n) { return edge_moved_[n - vertex_nodes_]; }))
+    if (quadratic_ && any_moved(std::span<const Index>(out.nodes).subspan(3)))
       return curved_face_points(out);
     const auto loop = mesh_.face(f);
     const Vec3 &a = mesh_.points[loop[0]], &b = mesh_.points[loop[1]], &c = mesh_.points[loop[2]];
     const double area = 0.5 * (b - a).cross(c - a).norm();
-    for (const auto& q : triangle_rule(5)) {
+    for (const auto& q : triangle_rule(kFaceDegree)) {
       const auto& l = q.barycentric;
       double* n = out.add_point(area * q.weight, l[0] * a + l[1] * b + l[2] * c);
       if (quadratic_)
@@ -126,6 +127,12 @@ class TetSpace final : public FeSpace {
   }
 
  private:
+  // Whether one of the edge nodes sits off its edge's midpoint.
+  bool any_moved(std::span<const Index> edge_nodes) const {
+    return std::any_of(edge_nodes.begin(), edge_nodes.end(),
+                       [this](Index n) { return edge_moved_[n - vertex_nodes_] != 0; });
+  }
+
   bool is_curved(Index c) const { return !curved_.empty() && curved_[c]; }
 
   std::array<Vec3, 10> geometry_nodes(Index c) const {
@@ -151,7 +158,7 @@ class TetSpace final : public FeSpace {
   void curved_face_points(FacePoints& out) const {
     std::array<Vec3, 6> x;
     for (int k = 0; k < 6; ++k) x[k] = node_point[out.nodes[k]];
-    for (const auto& q : triangle_rule(5)) {
+    for (const auto& q : triangle_rule(kFaceDegree)) {
       Vec3 at;
       const double area = curved_triangle_point(x, q.barycentric, at);
       double* n = out.add_point(area * q.weight, at);
@@ -164,11 +171,8 @@ class TetSpace final : public FeSpace {
   void mark_curved() {
     if (std::find(edge_moved_.begin(), edge_moved_.end(), 1) == edge_moved_.end()) return;
     curved_.assign(corners_.size(), 0);
-    for (std::size_t c = 0; c < corners_.size(); ++c) {
-      const auto nodes = cell_nodes(static_cast<Index>(c));
-      curved_[c] = std::any_of(nodes.begin() + 4, nodes.end(),
-                               [&](Index n) { return edge_moved_[n - vertex_nodes_]; });
-    }
+    for (std::size_t c = 0; c < corners_.size(); ++c)
+      curved_[c] = any_moved(cell_nodes(static_cast<Index>(c)).subspan(4));
     const auto min_jacobian = [&](Index c) {
       const std::array<Vec3, 10> x = geometry_nodes(c);
       std::array<double, 10> value;
@@ -184,13 +188,17 @@ class TetSpace final : public FeSpace {
       return curved_[c] && !(min_jacobian(c) > 0.0);
     });
     if (bad == kNoIndex) return;
+    const auto& t = corners_[bad];
+    const double straight =
+        tet_affine(mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]], mesh_.points[t[3]])
+            .volume;
     std::ostringstream message;
     message << "mesh: cell " << bad
             << ": the curved P2 tetrahedron (boundary edge nodes on the true boundary) folds: "
-               "its Jacobian is "
-            << 6.0 * min_jacobian(bad)
-            << " at a quadrature point; the boundary edges are too long for the surface's "
-               "curvature";
+               "its Jacobian falls to "
+            << min_jacobian(bad) / straight
+            << " times the straight tetrahedron's at a quadrature point; the boundary edges "
+               "are too long for the surface's curvature there";
     throw InputError(message.str());
   }
 
