@@ -148,7 +148,7 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
       split_conditions(mesh, boundary);
   volmesh::report(options.progress, "assembly", 0.0);
   SolvedField out;
-  out.space = make_space(mesh, space_kind);
+  out.space = make_space(mesh, space_kind, to_true_boundary);
   const FeSpace& space = *out.space;
   Distribution distribution;
   if (options.cell_rank) {

@@ -83,12 +83,13 @@ std::optional<Space> space_from_name(std::string_view name) {
 
 namespace volmesh::fem::detail {
 
-std::unique_ptr<FeSpace> make_space(const PolyMesh& mesh, Space space) {
+std::unique_ptr<FeSpace> make_space(const PolyMesh& mesh, Space space,
+                                    const PointMap& to_true_boundary) {
   switch (space) {
     case Space::p1:
-      return make_tet_space(mesh, false);
+      return make_tet_space(mesh, false, {});
     case Space::p2:
-      return make_tet_space(mesh, true);
+      return make_tet_space(mesh, true, to_true_boundary);
     case Space::q1:
       return make_q1_space(mesh);
     case Space::polyhedral:

@@ -95,10 +95,14 @@ class FeSpace {
 };
 
 // Builds the space, checking that every cell suits it and has a positive Jacobian.
-std::unique_ptr<FeSpace> make_space(const PolyMesh& mesh, Space space);
+// to_true_boundary, when given, puts p2's boundary edge nodes on the true boundary
+// (isoparametric P2, curved_tet.hpp); the other spaces ignore it.
+std::unique_ptr<FeSpace> make_space(const PolyMesh& mesh, Space space,
+                                    const PointMap& to_true_boundary = {});
 
 // Builders behind make_space (one file each).
-std::unique_ptr<FeSpace> make_tet_space(const PolyMesh& mesh, bool quadratic);
+std::unique_ptr<FeSpace> make_tet_space(const PolyMesh& mesh, bool quadratic,
+                                        const PointMap& to_true_boundary);
 std::unique_ptr<FeSpace> make_q1_space(const PolyMesh& mesh);
 std::unique_ptr<FeSpace> make_polyhedral_space(const PolyMesh& mesh);
 

@@ -3,7 +3,13 @@
 //
 // Spaces (Space):
 //   p1          linear tetrahedra; needs a mesh of tets
-//   p2          quadratic tetrahedra (nodes at corners and edge midpoints); needs tets
+//   p2          quadratic tetrahedra (nodes at corners and edge midpoints); needs tets.
+//               Isoparametric where the boundary is curved: given problem.to_true_boundary,
+//               the node of each boundary-face edge whose ends lie on the true boundary
+//               moves to its midpoint's image there, and the tets with such a node use the
+//               quadratic (10-node) geometry map in every integral (degree-5 rule), their
+//               boundary faces the 6-node one; the other tets stay affine. Third order in L2
+//               on curved domains, where straight edges cap it at second.
 //   q1          trilinear hexahedra, 2×2×2 Gauss points; needs hexes
 //   polyhedral  lowest-order conforming space on any cell (octree cells with hanging faces,
 //               cut cells with warped or non-convex faces): P1 on the sub-tessellation of
@@ -34,7 +40,8 @@
 // Input checks throw volmesh::InputError: a region without conductivity/material, a
 // boundary tag without a condition, no Dirichlet (displacement) tag at all, an inverted or
 // degenerate cell (non-positive Jacobian; for the polyhedral space: no point inside sees all
-// its faces), a cell the space cannot take (p1 on a hex).
+// its faces; for curved p2: at a quadrature point of the curved map), a cell the space cannot
+// take (p1 on a hex).
 //
 // Local matrices are computed in parallel (TBB) and added in cell order: the same bytes for
 // any thread count. The problem's functions (source, boundary data, exact solution) are
