@@ -53,28 +53,36 @@ struct Input {
   bool own_boundary = false;
   std::string default_space;  // the mesher's (MesherInfo::default_space)
   double check_seconds = 0.0;  // of a mesh read from a file
+  // Under mpirun, a partitioned PVTU's parts: each cell's rank. Empty: METIS partitions.
+  std::vector<Index> cell_part;
 };
 
-// Rank 0 reads or meshes (distributed.hpp); every rank opens the domain.
+// The reading and checking of a mesh file; numbers[1]: the check's seconds.
+PolyMesh read_checked(const SolveOptions& opt, std::vector<Index>* cell_part,
+                      std::vector<double>& numbers) {
+  PolyMesh mesh = cell_part ? read_pieces_on_ranks(opt.mesh, *cell_part) : read_mesh(opt.mesh);
+  const Clock::time_point checking = Clock::now();
+  const ValidityReport r = check_validity(mesh);
+  numbers[1] = seconds_since(checking);
+  if (!r.valid())
+    throw InputError(opt.mesh + ": invalid mesh, not solved (" +
+                     (r.problems.empty() ? std::string("see volmesh check") : r.problems.front()) +
+                     ")");
+  return mesh;
+}
+
+// Rank 0 reads or meshes (distributed.hpp), or under mpirun every rank reads its piece of a
+// partitioned PVTU; every rank opens the domain.
 Input read_input(const SolveOptions& opt, const Progress& progress) {
   Input in;
   std::vector<double> numbers{0.0, 0.0};  // h, check seconds
   if (!opt.mesh.empty()) {
-    in.mesh = mesh_on_rank_zero(
-        [&] {
-          report(progress, "reading " + opt.mesh, 0.0);
-          PolyMesh mesh = read_mesh(opt.mesh);
-          const Clock::time_point checking = Clock::now();
-          const ValidityReport r = check_validity(mesh);
-          numbers[1] = seconds_since(checking);
-          if (!r.valid())
-            throw InputError(opt.mesh + ": invalid mesh, not solved (" +
-                             (r.problems.empty() ? std::string("see volmesh check")
-                                                 : r.problems.front()) +
-                             ")");
-          return mesh;
-        },
-        &numbers);
+    report(progress, "reading " + opt.mesh, 0.0);
+    // A check that fails fails alike on every rank: they all hold the same mesh.
+    if (fem::distributed_run() && std::filesystem::path(opt.mesh).extension() == ".pvtu")
+      in.mesh = read_checked(opt, &in.cell_part, numbers);
+    else
+      in.mesh = mesh_on_rank_zero([&] { return read_checked(opt, nullptr, numbers); }, &numbers);
     in.check_seconds = numbers[1];
     in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
     in.domain_name = opt.domain.empty() ? opt.mesh : domain_display_name(opt.domain);
@@ -142,7 +150,9 @@ int run_solve(const SolveOptions& opt) {
   const Input in = read_input(opt, part_of(progress, 0.0, kMeshShare));
   const double mesh_seconds = seconds_since(start) - in.check_seconds;
   const Clock::time_point partitioning = Clock::now();
-  const std::vector<Index> cell_rank = distributed ? partition_for_ranks(in.mesh) : std::vector<Index>{};
+  const std::vector<Index> cell_rank = !distributed              ? std::vector<Index>{}
+                                       : !in.cell_part.empty() ? in.cell_part
+                                                               : partition_for_ranks(in.mesh);
   const double partition_seconds = seconds_since(partitioning);
   const Solver solver{opt.solver, distributed ? &cell_rank : nullptr};
   const Clock::time_point setting_up = Clock::now();
@@ -269,7 +279,10 @@ Command add_solve_command(CLI::App& root) {
       ->capture_default_str();
   exact->excludes(problem);
   source->excludes(problem);
-  CLI::Option* mesh = app->add_option("--mesh", opt->mesh, "mesh to solve on (.vtu .msh DIR.foam)");
+  CLI::Option* mesh = app->add_option(
+      "--mesh", opt->mesh,
+      "mesh to solve on (.vtu .pvtu .msh DIR.foam); under mpirun -np P a .pvtu of P pieces "
+      "(volmesh partition --parts P) is read one piece per rank");
   CLI::Option* method = app->add_option("--method", opt->method,
                                         "mesh the domain: " + meshers::mesher_names())
                             ->check(CLI::IsMember(mesher_names()));

@@ -76,6 +76,22 @@ void mesh_arrays(Io& io, PolyMesh& mesh) {
   io(mesh.tag_names);
 }
 
+// A piece's arrays, each as one vector.
+template <class Io>
+void cell_list_arrays(Io& io, CellList& list) {
+  io(list.points);
+  io(list.point_ids);
+  io(list.cell_ids);
+  io(list.cell_region);
+  io(list.cell_kind);
+  io(list.cell_begin);
+  io(list.items);
+  io(list.tag_names);
+  io(list.tagged_tag);
+  io(list.tagged_begin);
+  io(list.tagged_vertices);
+}
+
 // Runs fn on every rank; when it throws on any rank, every rank throws (rank 0 has the
 // message printed once).
 template <class Fn>
@@ -115,6 +131,35 @@ PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make, std::vector<do
     mesh_arrays(get, mesh);
     if (numbers) in.get(*numbers);
   }
+  return mesh;
+}
+
+PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Index>& cell_rank) {
+  std::vector<std::filesystem::path> files;
+  on_every_rank([&] {
+    files = pvtu_piece_files(pvtu);
+    if (files.size() != std::size_t(fem::ranks()))
+      throw InputError(pvtu.string() + ": " + std::to_string(files.size()) + " pieces for " +
+                       std::to_string(fem::ranks()) + " ranks (run it with mpirun -np " +
+                       std::to_string(files.size()) + ", or repartition with volmesh partition --parts " +
+                       std::to_string(fem::ranks()) + ")");
+  });
+  std::vector<char> bytes;
+  on_every_rank([&] {
+    CellList mine = read_vtu_piece(files[fem::rank()]);
+    Bytes out(bytes);
+    auto put = [&out](auto& v) { out.put(v); };
+    cell_list_arrays(put, mine);
+  });
+  std::vector<std::vector<char>> all = fem::gather_bytes_to_all(bytes);
+  std::vector<CellList> pieces(all.size());
+  for (std::size_t r = 0; r < all.size(); ++r) {
+    Bytes in(all[r]);
+    auto get = [&in](auto& v) { in.get(v); };
+    cell_list_arrays(get, pieces[r]);
+  }
+  PolyMesh mesh;
+  on_every_rank([&] { mesh = stitch_pieces(pieces, pvtu.string(), &cell_rank); });
   return mesh;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // What `solve` and `study` do differently when mpirun starts them (fem/parallel.hpp): rank 0
 // meshes (meshing is serial) and sends the mesh to every rank, rank 0 partitions it with
-// METIS into one part per rank and sends the cell → part array, and the output is written
+// METIS into one part per rank and sends the cell → part array (or the ranks read the pieces
+// of a partitioned PVTU, one each, and take its parts as theirs), and the output is written
 // by rank 0 (.vtu) or by every rank, one piece each (.pvtu). Every rank holds the whole
 // mesh: the solve's matrix, preconditioner and vectors are distributed, the mesh is not.
 #include <filesystem>
@@ -20,6 +21,14 @@ namespace volmesh::cli {
 // throws its message (fem::agree). One rank: make() alone.
 PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make,
                            std::vector<double>* numbers = nullptr);
+
+// A partitioned mesh written once (`volmesh partition MESH --parts P -o parts.pvtu`), read
+// by the ranks: rank r reads piece r alone, the ranks exchange the pieces, and every rank
+// stitches the whole mesh by the pieces' global ids (stitch_pieces); cell_rank: each cell's
+// piece, which is its rank (no METIS at run time). Throws InputError on every rank when the
+// number of pieces is not the number of ranks, or a piece is missing, unreadable, without
+// global ids, or does not fit the others.
+PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Index>& cell_rank);
 
 // Each cell's rank: rank 0 partitions with METIS (one part per rank) and shares the array.
 // Throws InputError on every rank when there are more ranks than cells.

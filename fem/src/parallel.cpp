@@ -144,16 +144,31 @@ std::vector<double> gather_to_all(const double* mine, std::size_t count) {
   return out;
 }
 
-void broadcast(std::vector<char>& bytes) {
-  if (ranks() == 1) return;
+namespace {
+
+void broadcast_from(std::vector<char>& bytes, int root) {
   std::int64_t size = static_cast<std::int64_t>(bytes.size());
-  MPI_Bcast(&size, 1, MPI_INT64_T, 0, PETSC_COMM_WORLD);
+  MPI_Bcast(&size, 1, MPI_INT64_T, root, PETSC_COMM_WORLD);
   bytes.resize(size);
   // Large meshes in chunks: MPI counts are int.
   constexpr std::int64_t kChunk = std::int64_t(1) << 30;
   for (std::int64_t at = 0; at < size; at += kChunk)
-    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kChunk, size - at)), MPI_CHAR, 0,
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kChunk, size - at)), MPI_CHAR, root,
               PETSC_COMM_WORLD);
+}
+
+}  // namespace
+
+void broadcast(std::vector<char>& bytes) {
+  if (ranks() == 1) return;
+  broadcast_from(bytes, 0);
+}
+
+std::vector<std::vector<char>> gather_bytes_to_all(const std::vector<char>& mine) {
+  std::vector<std::vector<char>> out(ranks());
+  out[rank()] = mine;
+  for (int r = 0; r < ranks(); ++r) broadcast_from(out[r], r);
+  return out;
 }
 
 void barrier() {
@@ -168,16 +183,9 @@ void agree(const std::string& error) {
   int failed = error.empty() ? ranks() : rank();
   MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
   if (failed == ranks()) return;
+  // The failing rank's message to every rank (rank 0 prints it).
   std::vector<char> message(error.begin(), error.end());
-  if (failed != 0) {
-    // The failing rank's message to every rank (rank 0 prints it).
-    std::int64_t size = static_cast<std::int64_t>(message.size());
-    MPI_Bcast(&size, 1, MPI_INT64_T, failed, PETSC_COMM_WORLD);
-    message.resize(size);
-    MPI_Bcast(message.data(), static_cast<int>(size), MPI_CHAR, failed, PETSC_COMM_WORLD);
-  } else {
-    broadcast(message);
-  }
+  broadcast_from(message, failed);
   throw InputError(std::string(message.begin(), message.end()));
 }
 
@@ -195,6 +203,9 @@ std::vector<double> gather_to_all(const double* mine, std::size_t count) {
   return std::vector<double>(mine, mine + count);
 }
 void broadcast(std::vector<char>&) {}
+std::vector<std::vector<char>> gather_bytes_to_all(const std::vector<char>& mine) {
+  return {mine};
+}
 void barrier() {}
 void agree(const std::string& error) {
   if (!error.empty()) throw InputError(error);

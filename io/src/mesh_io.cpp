@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "volmesh/core/errors.hpp"
+#include "volmesh/io/partitioned_io.hpp"
 
 namespace volmesh {
 
@@ -27,7 +28,7 @@ bool is_foam_case(const std::filesystem::path& path) {
 
 bool is_mesh_file(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".vtu" || ext == ".msh" || ext == ".foam" || is_foam_case(path);
+  return ext == ".vtu" || ext == ".pvtu" || ext == ".msh" || ext == ".foam" || is_foam_case(path);
 }
 
 void require_writable_mesh_path(const std::filesystem::path& path) {
@@ -52,9 +53,10 @@ PolyMesh read_mesh(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError(path.string() + ": no such file");
   const std::string ext = lower_extension(path);
   if (ext == ".vtu") return read_vtu(path);
+  if (ext == ".pvtu") return read_pvtu(path);
   if (ext == ".msh") return read_msh(path);
   if (ext == ".foam" || is_foam_case(path)) return read_foam(path);
-  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .msh, a DIR.foam case)");
+  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .pvtu .msh, a DIR.foam case)");
 }
 
 }  // namespace volmesh

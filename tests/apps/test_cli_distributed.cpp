@@ -2,12 +2,14 @@
 // Eigen's solver to the solver tolerance, its iteration count stays flat under refinement,
 // `mpirun -np 1|2 volmesh solve` gives the serial solution (the 2-rank PVTU read by VTK's
 // parallel reader has the serial VTU's cells and values), a study's convergence slope is the
-// same on 2 ranks, and bad set-ups give one error line and a non-zero exit. Skipped in a
+// same on 2 ranks, a mesh partitioned once and read one piece per rank gives the same
+// solution, and bad set-ups give one error line and a non-zero exit. Skipped in a
 // build without PETSc.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -108,6 +110,51 @@ TEST_F(CliDistributed, PetscMatchesEigenAndOneAndTwoRanksMatchSerial) {
   }
 }
 
+// A mesh partitioned once by `volmesh partition` and read by the ranks, one piece each: the
+// solution is the serial Eigen solve's and the broadcast path's, Poisson and elasticity.
+TEST_F(CliDistributed, RanksReadAPartitionedMeshAndMatchSerial) {
+  const fs::path dir = test::scratch_dir("distributed-pieces");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"mesh cutcell builtin:ball --level 3", "poisson --problem sine"},             // polyhedral
+      {"mesh grid builtin:box --level 3", "elasticity --problem elastic-patch"}};  // Q1
+  for (const auto& [mesh, problem] : cases) {
+    SCOPED_TRACE(mesh);
+    const fs::path whole = dir / "mesh.vtu", eigen = dir / "eigen.vtu";
+    ASSERT_EQ(run_volmesh(mesh + " -o " + whole.string(), dir).exit_code, 0);
+    const std::string solve = "solve " + problem + " --json --mesh ";
+    const auto e = run_volmesh(solve + whole.string() + " --solver eigen -o " + eigen.string(), dir);
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    const auto unknowns = nlohmann::json::parse(e.out)["unknowns"];
+    for (int ranks : {1, 2}) {
+      const std::string n = std::to_string(ranks);
+      const fs::path parts = dir / ("parts" + n + ".pvtu"), out = dir / ("read" + n + ".pvtu"),
+                     sent = dir / ("sent" + n + ".pvtu");
+      const auto p = run_volmesh("partition " + whole.string() + " --parts " + n + " -o " +
+                                     parts.string() + " --quiet",
+                                 dir);
+      ASSERT_EQ(p.exit_code, 0) << p.err;
+      const auto read = run_mpi(ranks, solve + parts.string() + " -o " + out.string(), dir);
+      ASSERT_EQ(read.exit_code, 0) << read.err;
+      const auto j = nlohmann::json::parse(read.out);
+      EXPECT_EQ(j["ranks"], ranks);
+      EXPECT_EQ(j["unknowns"], unknowns);
+      expect_same_solution(compare_files(eigen, out));
+      // The broadcast path on the same mesh.
+      const auto b = run_mpi(ranks, solve + whole.string() + " -o " + sent.string(), dir);
+      ASSERT_EQ(b.exit_code, 0) << b.err;
+      expect_same_solution(compare_files(eigen, sent));
+    }
+    // One process reads the whole set.
+    const fs::path one = dir / "one.vtu";
+    const auto s = run_volmesh(solve + (dir / "parts2.pvtu").string() + " --solver eigen -o " +
+                                   one.string(),
+                               dir);
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+    EXPECT_EQ(nlohmann::json::parse(s.out)["errors"], nlohmann::json::parse(e.out)["errors"]);
+  }
+}
+
 // BoomerAMG's iterations stay about flat where incomplete Cholesky's double with each level
 // (levels 3-5 here: 8 times the unknowns per level).
 TEST_F(CliDistributed, IterationsStayFlatUnderRefinement) {
@@ -172,6 +219,50 @@ TEST_F(CliDistributed, BadSetUpsGiveOneLineOnEveryRankCount) {
                              dir),
                      "PETSc");
   EXPECT_FALSE(fs::exists(dir / "u.pvtu"));
+}
+
+// A partitioned mesh that does not fit the run: one line from rank 0, every rank non-zero.
+TEST_F(CliDistributed, BadPartitionedMeshesGiveOneLine) {
+  const fs::path dir = test::scratch_dir("distributed-bad-pieces");
+  if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
+  const fs::path whole = dir / "mesh.vtu", u = dir / "u.pvtu";
+  ASSERT_EQ(run_volmesh("mesh grid builtin:box --level 2 -o " + whole.string(), dir).exit_code, 0);
+  for (const char* parts : {"1", "2"})
+    ASSERT_EQ(run_volmesh("partition " + whole.string() + " --parts " + parts + " -o " +
+                              (dir / ("p" + std::string(parts) + ".pvtu")).string() + " --quiet",
+                          dir)
+                  .exit_code,
+              0);
+  // The pieces of another mesh.
+  const fs::path finer = dir / "finer.vtu";
+  ASSERT_EQ(run_volmesh("mesh grid builtin:box --level 3 -o " + finer.string(), dir).exit_code, 0);
+  ASSERT_EQ(run_volmesh("partition " + finer.string() + " --parts 2 -o " +
+                            (dir / "r2.pvtu").string() + " --quiet",
+                        dir)
+                .exit_code,
+            0);
+  const auto summary = [&](const std::string& name, const std::string& from,
+                           const std::string& to) {
+    std::string text = test::slurp(dir / "p2.pvtu");
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string solve = "solve poisson --problem sine --mesh ";
+  const std::string out = " -o " + u.string();
+  expect_one_error(run_mpi(2, solve + (dir / "p1.pvtu").string() + out, dir),
+                   "p1.pvtu: 1 pieces for 2 ranks");
+  expect_one_error(run_mpi(1, solve + (dir / "p2.pvtu").string() + out, dir),
+                   "p2.pvtu: 2 pieces for 1 ranks");
+  expect_one_error(run_mpi(2, solve + summary("missing.pvtu", "p2/p2_1.vtu", "p2/p2_9.vtu") + out, dir),
+                   "p2_9.vtu: cannot open");
+  expect_one_error(run_mpi(2, solve + summary("mixed.pvtu", "p2/p2_1.vtu", "r2/r2_1.vtu") + out, dir),
+                   "mixed.pvtu: ");
+  // A solution's pieces carry global_cell/global_point, not the partition's ids.
+  ASSERT_EQ(run_mpi(2, solve + whole.string() + " -o " + (dir / "solved.pvtu").string(), dir).exit_code, 0);
+  expect_one_error(run_mpi(2, solve + (dir / "solved.pvtu").string() + out, dir),
+                   "solved_0.vtu: no point data 'GlobalPointIds'");
+  EXPECT_FALSE(fs::exists(u));
 }
 
 }  // namespace

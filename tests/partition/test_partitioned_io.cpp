@@ -9,7 +9,9 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -168,6 +170,90 @@ TEST(Pvtu, SameMeshSameBytes) {
   for (std::size_t at; (at = summary.find("\"a/a_")) != std::string::npos;)
     summary.replace(at, 5, "\"b/b_");
   EXPECT_EQ(summary, bytes(dir / "b.pvtu"));
+}
+
+// Each face by its vertex set: its two cells (internal) or its tag's name (boundary).
+std::map<std::vector<Index>, std::string> faces_by_vertices(const PolyMesh& mesh) {
+  std::map<std::vector<Index>, std::string> out;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const auto loop = mesh.face(f);
+    std::vector<Index> key(loop.begin(), loop.end());
+    std::sort(key.begin(), key.end());
+    out[key] = mesh.is_boundary(f)
+                   ? mesh.tag_names[mesh.face_tag[f]]
+                   : std::to_string(std::min(mesh.owner[f], mesh.neighbour[f])) + "|" +
+                         std::to_string(std::max(mesh.owner[f], mesh.neighbour[f]));
+  }
+  return out;
+}
+
+// The same points, cells and faces; face order, loop rotation and tag order may differ
+// (the pieces' cells are written from each piece's own faces).
+void expect_same_mesh(const PolyMesh& a, const PolyMesh& b) {
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.cell_region, b.cell_region);
+  EXPECT_EQ(a.num_faces(), b.num_faces());
+  EXPECT_EQ(faces_by_vertices(a), faces_by_vertices(b));
+  EXPECT_EQ(std::set<std::string>(a.tag_names.begin(), a.tag_names.end()),
+            std::set<std::string>(b.tag_names.begin(), b.tag_names.end()));
+}
+
+// The pieces stitched by their global ids are the mesh the whole file gives, hexahedra and
+// polyhedra alike, and each cell's piece is its part.
+TEST(Pvtu, StitchedPiecesAreTheWholeMesh) {
+  TempDir dir;
+  const PolyMesh grid = two_region_grid();
+  const Partition p = partition_mesh(grid, {.parts = 3});
+  struct Case {
+    const char* name;
+    PolyMesh mesh;
+    std::vector<Index> cell_part;
+  };
+  for (const Case& c : {Case{"grid", grid, p.cell_part},
+                        Case{"cubes", big_cube_next_to_four_small(true), {0, 1, 1, 0, 1}}}) {
+    SCOPED_TRACE(c.name);
+    const Index parts = *std::max_element(c.cell_part.begin(), c.cell_part.end()) + 1;
+    const fs::path set = dir / (std::string(c.name) + ".pvtu"),
+                   whole = dir / (std::string(c.name) + ".vtu");
+    write_pvtu(pieces_of(c.mesh, c.cell_part, parts), set);
+    write_vtu(c.mesh, whole);
+    std::vector<Index> cell_part;
+    expect_same_mesh(read_pvtu(set, &cell_part), read_vtu(whole));
+    EXPECT_EQ(cell_part, c.cell_part);
+    expect_same_mesh(read_mesh(set), read_vtu(whole));
+  }
+}
+
+// A set whose pieces are missing, lack their global ids, or come from two meshes is
+// refused with the file named.
+TEST(Pvtu, PiecesThatDoNotFitAreRefused) {
+  TempDir dir;
+  const PolyMesh mesh = two_region_grid();
+  write_pvtu(pieces_of(mesh, partition_mesh(mesh, {.parts = 2}).cell_part, 2), dir / "a.pvtu");
+  const PolyMesh other = hex_grid(4, 4, 4);
+  write_pvtu(pieces_of(other, partition_mesh(other, {.parts = 2}).cell_part, 2), dir / "b.pvtu");
+  const auto refused = [](const fs::path& path, const std::string& what) {
+    try {
+      read_pvtu(path);
+      ADD_FAILURE() << path << " was read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  std::string mixed = bytes(dir / "a.pvtu");
+  mixed.replace(mixed.find("a/a_1.vtu"), 9, "b/b_1.vtu");
+  std::ofstream(dir / "mixed.pvtu") << mixed;
+  refused(dir / "mixed.pvtu", "mixed.pvtu: ");
+  std::string missing = bytes(dir / "a.pvtu");
+  missing.replace(missing.find("a/a_1.vtu"), 9, "a/a_7.vtu");
+  std::ofstream(dir / "missing.pvtu") << missing;
+  refused(dir / "missing.pvtu", "a_7.vtu: cannot open");
+  write_pvtu(std::vector<MeshPiece>{{mesh, {}}}, dir / "bare.pvtu");
+  refused(dir / "bare.pvtu", "bare_0.vtu: no point data 'GlobalPointIds'");
+  write_vtu(mesh, dir / "whole.vtu");
+  refused(dir / "whole.vtu.pvtu", "cannot open");
+  fs::copy_file(dir / "whole.vtu", dir / "not.pvtu");
+  refused(dir / "not.pvtu", "not.pvtu: not a PVTU file");
 }
 
 // A second run replaces the earlier pieces (4 become 2), but a directory holding anything

@@ -51,6 +51,8 @@ double max_over_ranks(double value);
 std::vector<double> gather_to_all(const double* mine, std::size_t count);
 // Rank 0's bytes on every rank.
 void broadcast(std::vector<char>& bytes);
+// Every rank's bytes on every rank, in rank order.
+std::vector<std::vector<char>> gather_bytes_to_all(const std::vector<char>& mine);
 // Waits for all ranks (the parallel writers' pieces before the summary file).
 void barrier();
 

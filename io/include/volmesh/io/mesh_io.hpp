@@ -34,8 +34,9 @@ void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
 // Throws the InputError write_mesh would for a path of no known output format: checked
 // before a long run, so that a typo does not cost it.
 void require_writable_mesh_path(const std::filesystem::path& path);
-// Reads by extension: .vtu, .msh, or an OpenFOAM case (a directory ending in .foam or holding
-// constant/polyMesh, or its .foam marker file).
+// Reads by extension: .vtu, .pvtu (a partitioned set, stitched: partitioned_io.hpp), .msh, or
+// an OpenFOAM case (a directory ending in .foam or holding constant/polyMesh, or its .foam
+// marker file).
 PolyMesh read_mesh(const std::filesystem::path& path);
 
 bool is_mesh_file(const std::filesystem::path& path);
