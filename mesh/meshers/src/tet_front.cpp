@@ -66,6 +66,7 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   r.h = size;
   nlohmann::json stages = {{"check", check_seconds}};
   for (const auto& [stage, seconds] : s.seconds) stages[stage] = seconds;
+  stages["improve"] = s.improve.seconds;
   r.summary = {{"tets", s.tets},
                {"nodes", s.nodes},
                {"aux_ratio", options.aux_ratio},
@@ -78,6 +79,17 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
                {"fallback", {{"stalls", s.stalls},
                              {"cavity_faces", s.cavity_faces},
                              {"tets", s.fallback_tets}}},
+               {"improve", {{"passes", s.improve.passes},
+                            {"flips", {{"2-3", s.improve.flips_2_3},
+                                       {"3-2", s.improve.flips_3_2},
+                                       {"4-4", s.improve.flips_4_4},
+                                       {"edge_removal", s.improve.edge_removals}}},
+                            {"nodes_moved", s.improve.nodes_moved},
+                            {"min_dihedral_deg", {{"before", s.improve.min_dihedral_before},
+                                                  {"after", s.improve.min_dihedral_after}}},
+                            {"radius_edge_max", {{"before", s.improve.radius_edge_before},
+                                                 {"after", s.improve.radius_edge_after}}},
+                            {"seconds", s.improve.seconds}}},
                {"shape", shape_of(front.mesh)},
                {"stage_seconds", stages}};
   return r;

@@ -6,6 +6,7 @@
 
 #include "advance.hpp"
 #include "fallback.hpp"
+#include "improve.hpp"
 #include "nesting.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
@@ -86,6 +87,13 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     if (!surfaces[s].outermost) continue;
     m.boundary_faces.insert(m.boundary_faces.end(), outward[s].begin(), outward[s].end());
     m.boundary_tag.insert(m.boundary_tag.end(), outward[s].size(), static_cast<Index>(s));
+  }
+  if (options.improve) {
+    std::vector<Tri> kept;
+    for (const std::vector<Tri>& tris : outward) kept.insert(kept.end(), tris.begin(), tris.end());
+    Index surface_points = 0;
+    for (const ProjectionSurface& s : surfaces) surface_points += s.surface.num_points();
+    r.stats.improve = front::improve_mesh(m, surface_points, kept);
   }
   r.stats.tets = m.num_cells();
   r.stats.nodes = m.num_points();

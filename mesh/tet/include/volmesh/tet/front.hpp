@@ -35,6 +35,19 @@ struct FrontOptions {
   int aux_ratio = kDefaultAuxRatio;  // n: auxiliary points at h / n
   // A test hook: the front stops after this many tets per region, as if it stalled (-1: never).
   long long stop_after = -1;
+  bool improve = true;  // run the improvement pass (ImproveStats) on the finished mesh
+};
+
+// The quality improvement pass after the front and the fallback: 2-3, 3-2, 4-4 flips and
+// edge removals (rings of 5 to 7 tets), and smoothing of the nodes inside the regions, each made
+// only where it raises the minimum of the min dihedral-angle sine over the tets it touches.
+struct ImproveStats {
+  long long passes = 0;
+  long long flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, edge_removals = 0;
+  long long nodes_moved = 0;  // node moves (a node may move in several passes)
+  double min_dihedral_before = 0.0, min_dihedral_after = 0.0;  // degrees
+  double radius_edge_before = 0.0, radius_edge_after = 0.0;    // max radius-edge ratio
+  double seconds = 0.0;
 };
 
 struct FrontStats {
@@ -49,6 +62,7 @@ struct FrontStats {
   long long stalls = 0;         // regions whose front could not advance further
   long long fallback_tets = 0;  // tets the projection mesher made in the stalled cavities
   long long cavity_faces = 0;   // front faces handed to the projection mesher
+  ImproveStats improve;
   // Seconds by stage: aux (the auxiliary points), front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
 };

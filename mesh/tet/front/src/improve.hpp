@@ -1,0 +1,20 @@
+#pragma once
+// The quality improvement pass on a finished mesh (front.hpp, ImproveStats): flips and
+// smoothing of the interior nodes, each change made only where it raises the minimum quality
+// of the tets it touches, repeated until a pass changes nothing.
+#include <array>
+#include <vector>
+
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/tet/front.hpp"
+
+namespace volmesh::tet::front {
+
+// Points below fixed_nodes (the input surfaces' points) never move; every triangle of `kept`
+// (the input surfaces' triangles, outer and interface) stays a face of the mesh. The mesh's
+// boundary faces are untouched; its tets keep their regions. Serial, so the result is the
+// same for any thread count.
+ImproveStats improve_mesh(TetMesh& m, Index fixed_nodes,
+                          const std::vector<std::array<Index, 3>>& kept);
+
+}  // namespace volmesh::tet::front
