@@ -77,7 +77,12 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
                           {"aux_deleted", s.aux_deleted}}},
                {"fallback", {{"stalls", s.stalls},
                              {"cavity_faces", s.cavity_faces},
-                             {"tets", s.fallback_tets}}},
+                             {"largest_cavity", s.largest_cavity},
+                             {"tets", s.fallback_tets},
+                             {"split_cavity_faces", s.split_cavity_faces},
+                             {"refined_tets", s.refined_tets},
+                             {"split_boundary_faces", s.split_boundary_faces},
+                             {"steiner_points", s.steiner_points}}},
                {"shape", shape_of(front.mesh)},
                {"stage_seconds", stages}};
   return r;
