@@ -1,7 +1,7 @@
 /* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
  * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
- * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (HMIS,
- * ext+i, P_max 4, strong threshold 0.5), relative residual 1e-8. Prints one JSON line:
+ * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (PMIS,
+ * ext+i, P_max 4, strong threshold 0.25), relative residual 1e-8. Prints one JSON line:
  * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
  * Usage: poisson7 -n N [PETSc options]. */
 #include <petscdmda.h>
@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
   PetscCall(PCSetType(pc, PCHYPRE));
   PetscCall(PCHYPRESetType(pc, "boomeramg"));
   PetscCall(PetscOptionsInsertString(NULL,
-      "-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_interp_type ext+i "
-      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.5"));
+      "-pc_hypre_boomeramg_coarsen_type PMIS -pc_hypre_boomeramg_interp_type ext+i "
+      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.25"));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
   PetscCall(PCSetUp(pc));

@@ -5,7 +5,9 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 
+#include "cavity_pieces.hpp"
 #include "nesting.hpp"
 #include "predicates.hpp"
 #include "volmesh/core/errors.hpp"
@@ -15,8 +17,6 @@
 namespace volmesh::tet::front {
 
 namespace {
-
-using Tri = std::array<Index, 3>;
 
 // The region label of the cavity inside the projection's surfaces; kSolid marks the insides
 // of holes (surfaces at odd depth), whose tets are dropped.
@@ -85,10 +85,68 @@ std::optional<Vec3> kernel_point(const std::vector<Vec3>& points, const std::vec
   return std::nullopt;
 }
 
+// A projection of the cavity that rounded to doubles, with the cuts it makes in the faces.
+struct Candidate {
+  ProjectionMesh exact;
+  TetMesh rounded;
+  CavitySplit split;  // in the projection's point indices
+  std::size_t loose_cut = 0;  // cut faces of no tet (boundary triangles, other cavities')
+};
+
+// The candidate's tets and split in mesh indices, its Steiner points appended to `points`.
+std::pair<std::vector<Tet>, CavitySplit> to_mesh(const Candidate& c, const std::vector<Index>& global,
+                                                  std::vector<Vec3>& points) {
+  std::vector<Index> index(c.rounded.points.size(), kNoIndex);
+  for (std::size_t i = 0; i < global.size(); ++i) index[i] = global[i];
+  std::vector<Tet> tets;
+  for (std::size_t t = 0; t < c.rounded.cells.size(); ++t)
+    if (c.rounded.cell_region[t] == kCavity) tets.push_back(c.rounded.cells[t]);
+  // Steiner points numbered in the projection's order, for determinism.
+  std::vector<char> used(index.size(), 0);
+  for (const Tet& t : tets)
+    for (const Index v : t) used[v] = 1;
+  for (std::size_t v = global.size(); v < index.size(); ++v)
+    if (used[v]) {
+      index[v] = static_cast<Index>(points.size());
+      points.push_back(c.rounded.points[v]);
+    }
+  for (Tet& t : tets)
+    for (Index& v : t) v = index[v];
+  CavitySplit split;
+  for (const auto& [e, on] : c.split.edge_points) {
+    Edge g{index[e[0]], index[e[1]]};
+    std::vector<Index> mapped;
+    for (const Index v : on) mapped.push_back(index[v]);
+    if (g[0] > g[1]) {
+      std::swap(g[0], g[1]);
+      std::reverse(mapped.begin(), mapped.end());
+    }
+    split.edge_points[g] = std::move(mapped);
+  }
+  const auto map3 = [&](const Tri& t) { return Tri{index[t[0]], index[t[1]], index[t[2]]}; };
+  for (const auto& [key, face] : c.split.faces) {
+    std::vector<Tri> pieces;
+    for (const Tri& p : face.second) pieces.push_back(map3(p));
+    split.faces[corners_of(map3(face.first))] = {map3(face.first), std::move(pieces)};
+  }
+  return {std::move(tets), std::move(split)};
+}
+
 }  // namespace
 
-std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
-                                               const std::vector<Tri>& faces) {
+void close_cavity(TetMesh& mesh, Index label, const std::vector<Tri>& current,
+                  const std::vector<Tri>& loose, FaceSplits& splits, FrontStats& stats) {
+  std::vector<Tri> faces;
+  for (const Tri& t : current) splits.resolve(t, faces);
+  std::vector<Vec3>& points = mesh.points;
+  const auto add = [&](const std::vector<Tet>& tets) {
+    mesh.cells.insert(mesh.cells.end(), tets.begin(), tets.end());
+    mesh.cell_region.insert(mesh.cell_region.end(), tets.size(), label);
+    stats.fallback_tets += static_cast<long long>(tets.size());
+  };
+  ++stats.stalls;
+  stats.cavity_faces += static_cast<long long>(faces.size());
+  stats.largest_cavity = std::max(stats.largest_cavity, static_cast<long long>(faces.size()));
   // Components by shared corners, each an outward surface (the faces reversed).
   std::vector<Index> up(points.size());
   std::iota(up.begin(), up.end(), 0);
@@ -97,11 +155,11 @@ std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
     up[find(up, t[2])] = find(up, t[0]);
   }
   std::map<Index, std::vector<Tri>> by_root;
-  for (const Tri& t : faces) by_root[find(up, t[0])].push_back({t[0], t[2], t[1]});
+  for (const Tri& t : faces) by_root[find(up, t[0])].push_back(reversed(t));
   std::vector<std::vector<Tri>> components;
   for (auto& [root, tris] : by_root) components.push_back(std::move(tris));
   // Separate cavities, each a tet or seen whole from one point (a fan of tets).
-  std::vector<std::array<Index, 4>> tets;
+  std::vector<Tet> tets;
   const std::size_t first_new = points.size();
   std::size_t closed = 0;
   for (const auto& c : components) {
@@ -122,11 +180,16 @@ std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
     for (const Tri& t : c) tets.push_back({t[0], t[2], t[1], apex});
     ++closed;
   }
-  if (closed == components.size()) return tets;
+  if (closed == components.size()) {
+    stats.steiner_points += static_cast<long long>(points.size() - first_new);
+    add(tets);
+    return;
+  }
   points.resize(first_new);
   const std::vector<Index> parent = parents(points, components);
   std::vector<ProjectionSurface> surfaces;
-  std::vector<Index> global;  // projection input point -> mesh point
+  std::vector<Index> global;       // projection input point -> mesh point
+  std::vector<Tri> outward;        // the components' faces in projection input points
   for (std::size_t c = 0; c < components.size(); ++c) {
     int depth = 0;
     for (Index p = parent[c]; p != kNoIndex; p = parent[p]) ++depth;
@@ -134,6 +197,7 @@ std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
     s.label = depth % 2 == 0 ? kCavity : kSolid;
     s.outermost = depth == 0;
     s.name = "cavity";
+    const Index offset = static_cast<Index>(global.size());
     std::map<Index, Index> local;
     for (const Tri& t : components[c]) {
       Tri lt;
@@ -146,45 +210,54 @@ std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
         lt[i] = it->second;
       }
       s.surface.triangles.push_back(lt);
+      outward.push_back({offset + lt[0], offset + lt[1], offset + lt[2]});
     }
     surfaces.push_back(std::move(s));
   }
-  // Each direction in turn until one leaves the cavity's faces whole.
-  std::vector<ProjectionOptions> directions;
+  std::set<Tri> loose_corners;
+  for (const Tri& t : loose) loose_corners.insert(corners_of(t));
+  // The directions in turn until one cuts no face of no tet (a boundary triangle, another
+  // cavity's face); else the one that cuts the fewest such faces, then the fewest faces.
+  std::vector<Candidate> candidates;
   for (const Axis a : {Axis::z, Axis::x, Axis::y})
-    for (int tilt = 0; tilt <= kTilts; ++tilt)
-      directions.push_back({.auto_axis = false, .axis = a, .tilt = tilt});
-  for (const ProjectionOptions& d : directions) {
-    ProjectionMesh exact;
-    TetMesh mesh;
-    try {
-      exact = tetrahedralize_by_projection(surfaces, d);
-      if (exact.stats.boundary_steiner > 0) continue;
-      Rounding rounding;
-      mesh = round_to_doubles(exact, surfaces, rounding);
-    } catch (const InputError&) {
+    for (int tilt = 0; tilt <= kTilts; ++tilt) {
+      Candidate c;
+      try {
+        c.exact = tetrahedralize_by_projection(surfaces, {.auto_axis = false, .axis = a, .tilt = tilt});
+        Rounding rounding;
+        c.rounded = round_to_doubles(c.exact, surfaces, rounding);
+        c.split = pieces_of_faces(c.exact, c.rounded, kCavity, outward);
+      } catch (const InputError&) {
+        continue;
+      }
+      for (const auto& [key, face] : c.split.faces)
+        c.loose_cut += loose_corners.count(corners_of(
+            {global[face.first[0]], global[face.first[1]], global[face.first[2]]}));
+      const bool enough = c.loose_cut == 0;
+      candidates.push_back(std::move(c));
+      if (enough) break;
+    }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return std::pair{a.loose_cut, a.split.faces.size()} < std::pair{b.loose_cut, b.split.faces.size()};
+  });
+  std::vector<Tri> cuttable = loose;
+  cuttable.insert(cuttable.end(), faces.begin(), faces.end());
+  for (const Candidate& c : candidates) {
+    auto [cavity_tets, split] = to_mesh(c, global, points);
+    Refinement refinement;
+    if (!refine_around(points, mesh.cells, mesh.cell_region, split, cuttable, splits, refinement)) {
+      points.resize(first_new);
       continue;
     }
-    std::vector<Index> to_mesh(mesh.points.size(), kNoIndex);
-    for (std::size_t i = 0; i < global.size(); ++i) to_mesh[i] = global[i];
-    std::vector<std::array<Index, 4>> tets;
-    for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-      if (mesh.cell_region[c] != kCavity) continue;
-      std::array<Index, 4> t;
-      for (int i = 0; i < 4; ++i) {
-        Index& m = to_mesh[mesh.cells[c][i]];
-        if (m == kNoIndex) {
-          m = static_cast<Index>(points.size());
-          points.push_back(mesh.points[mesh.cells[c][i]]);
-        }
-        t[i] = m;
-      }
-      tets.push_back(t);
-    }
-    return tets;
+    stats.split_cavity_faces += static_cast<long long>(split.faces.size());
+    stats.refined_tets += refinement.tets;
+    stats.steiner_points += static_cast<long long>(points.size() - first_new);
+    add(cavity_tets);
+    return;
   }
   throw InputError("tet-front: the front stalled and no projection direction closes the " +
-                   std::to_string(faces.size()) + "-face cavity without splitting its faces");
+                   std::to_string(faces.size()) +
+                   "-face cavity with tets that stay positive in doubles (exact orientation)");
 }
 
 }  // namespace volmesh::tet::front

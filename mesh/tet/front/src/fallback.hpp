@@ -1,17 +1,21 @@
 #pragma once
-// Closing a stalled front: the cavity it bounds is meshed by the projection mesher
-// (projection.hpp, rounding.hpp) and merged in.
-#include <array>
+// Closing a stalled front: the cavity it bounds becomes one tet, a fan from a point that sees
+// all of it, or else the projection mesher's tets (projection.hpp, rounding.hpp), merged in
+// even where they split the cavity's faces: the tets outside are refined to match (merge.hpp).
 #include <vector>
 
-#include "volmesh/core/types.hpp"
+#include "merge.hpp"
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/tet/front.hpp"
 
 namespace volmesh::tet::front {
 
-// Tets filling the cavity bounded by `faces` (each facing into it), their new points appended
-// to `points`. Throws InputError when no projection direction meshes the cavity without
-// splitting its faces (the merged mesh would not be conforming).
-std::vector<std::array<Index, 4>> close_cavity(std::vector<Vec3>& points,
-                                               const std::vector<std::array<Index, 3>>& faces);
+// Appends to `mesh` (points, cells, cell_region) the tets, labelled `label`, that fill the
+// cavity bounded by `faces` (each facing into it, current: resolved through `splits`), and
+// refines the tets around it to stay conforming. `loose` are the faces of no tet that a split
+// may cut (boundary triangles, other cavities' faces): those cut are recorded in `splits`.
+// Throws InputError when no projection direction gives tets that stay positive in doubles.
+void close_cavity(TetMesh& mesh, Index label, const std::vector<Tri>& faces,
+                  const std::vector<Tri>& loose, FaceSplits& splits, FrontStats& stats);
 
 }  // namespace volmesh::tet::front

@@ -1,5 +1,5 @@
 // tetrahedralize_by_front: one front per surface (its inside, less the surfaces nested
-// directly in it), then the stalled cavities closed by projection.
+// directly in it), then the stalled cavities closed (fallback.hpp).
 #include "volmesh/tet/front.hpp"
 
 #include <string>
@@ -52,8 +52,9 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
   }
   const std::vector<Index> parent = front::parents(m.points, outward);
   double front_seconds = 0.0, fallback_seconds = 0.0;
+  std::vector<std::vector<Tri>> cavities(surfaces.size());
   for (std::size_t s = 0; s < surfaces.size(); ++s) {
-    auto clock = Clock::now();
+    const auto clock = Clock::now();
     std::vector<Tri> faces;
     for (const Tri& t : outward[s]) faces.push_back({t[0], t[2], t[1]});
     for (std::size_t c = 0; c < surfaces.size(); ++c)
@@ -69,28 +70,41 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     r.stats.relaxed_tets += region.relaxed_tets;
     r.stats.aux_points += region.aux_points;
     r.stats.aux_deleted += region.aux_deleted;
-    front_seconds += seconds_since(clock);
-    clock = Clock::now();
-    if (!region.cavity.empty()) {
-      ++r.stats.stalls;
-      r.stats.cavity_faces += static_cast<long long>(region.cavity.size());
-      const auto closing = front::close_cavity(m.points, region.cavity);
-      r.stats.fallback_tets += static_cast<long long>(closing.size());
-      region.tets.insert(region.tets.end(), closing.begin(), closing.end());
-    }
-    fallback_seconds += seconds_since(clock);
     m.cells.insert(m.cells.end(), region.tets.begin(), region.tets.end());
     m.cell_region.insert(m.cell_region.end(), region.tets.size(), surfaces[s].label);
+    cavities[s] = std::move(region.cavity);
+    front_seconds += seconds_since(clock);
   }
+  // The cavities are closed once every front has stopped: closing one may cut faces and
+  // edges of any region's tets, of the surfaces and of the cavities still open.
+  const auto clock = Clock::now();
+  front::FaceSplits splits;
+  for (std::size_t s = 0; s < surfaces.size(); ++s) {
+    if (cavities[s].empty()) continue;
+    std::vector<Tri> loose;
+    for (const auto& surface : outward)
+      for (const Tri& t : surface) splits.resolve(t, loose);
+    for (std::size_t o = s + 1; o < surfaces.size(); ++o)
+      for (const Tri& t : cavities[o]) splits.resolve(t, loose);
+    front::close_cavity(m, surfaces[s].label, cavities[s], loose, splits, r.stats);
+  }
+  fallback_seconds += seconds_since(clock);
   for (std::size_t s = 0; s < surfaces.size(); ++s) {
     m.tag_names.push_back(surfaces[s].name);
     if (!surfaces[s].outermost) continue;
-    m.boundary_faces.insert(m.boundary_faces.end(), outward[s].begin(), outward[s].end());
-    m.boundary_tag.insert(m.boundary_tag.end(), outward[s].size(), static_cast<Index>(s));
+    for (const Tri& t : outward[s]) {
+      const std::size_t before = m.boundary_faces.size();
+      splits.resolve(t, m.boundary_faces);
+      r.stats.split_boundary_faces += m.boundary_faces.size() - before > 1;
+    }
+    m.boundary_tag.resize(m.boundary_faces.size(), static_cast<Index>(s));
   }
   if (options.improve) {
+    // The surfaces' triangles as the fallback left them: pieces where it cut them, whose new
+    // corners lie on the surface and are pinned with the rest.
     std::vector<Tri> kept;
-    for (const std::vector<Tri>& tris : outward) kept.insert(kept.end(), tris.begin(), tris.end());
+    for (const std::vector<Tri>& tris : outward)
+      for (const Tri& t : tris) splits.resolve(t, kept);
     Index surface_points = 0;
     for (const ProjectionSurface& s : surfaces) surface_points += s.surface.num_points();
     r.stats.improve = front::improve_mesh(m, surface_points, kept);

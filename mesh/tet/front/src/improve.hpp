@@ -10,10 +10,10 @@
 
 namespace volmesh::tet::front {
 
-// Points below fixed_nodes (the input surfaces' points) never move; every triangle of `kept`
-// (the input surfaces' triangles, outer and interface) stays a face of the mesh. The mesh's
-// boundary faces are untouched; its tets keep their regions. Serial, so the result is the
-// same for any thread count.
+// Points below fixed_nodes (the input surfaces' points) and the corners of `kept` never move;
+// every triangle of `kept` (the input surfaces' triangles or their pieces, outer and interface)
+// stays a face of the mesh. The mesh's boundary faces are untouched; its tets keep their
+// regions. Serial, so the result is the same for any thread count.
 ImproveStats improve_mesh(TetMesh& m, Index fixed_nodes,
                           const std::vector<std::array<Index, 3>>& kept);
 

@@ -34,9 +34,13 @@ bool even_order(const Tet& stored, Index a, Index b, Index c, Index d) {
 }
 
 LiveMesh::LiveMesh(TetMesh& m, Index fixed_nodes, const std::vector<std::array<Index, 3>>& kept)
-    : m_(m), fixed_nodes_(fixed_nodes), incident_(m.points.size()), alive_(m.cells.size(), 1),
+    : m_(m), pinned_(m.points.size(), 0), incident_(m.points.size()), alive_(m.cells.size(), 1),
       quality_(m.cells.size()) {
-  for (const auto& f : kept) kept_.insert(sorted(f[0], f[1], f[2]));
+  std::fill(pinned_.begin(), pinned_.begin() + fixed_nodes, 1);
+  for (const auto& f : kept) {
+    kept_.insert(sorted(f[0], f[1], f[2]));
+    for (const Index v : f) pinned_[v] = 1;
+  }
   for (Index t = 0; t < m.num_cells(); ++t) attach(t);
 }
 

@@ -15,7 +15,8 @@ using Tet = std::array<Index, 4>;
 
 class LiveMesh {
  public:
-  // Nodes below fixed_nodes never move; `kept` are faces of m that no change may remove.
+  // Nodes below fixed_nodes and the corners of `kept` never move; `kept` are faces of m that
+  // no change may remove.
   LiveMesh(TetMesh& m, Index fixed_nodes, const std::vector<std::array<Index, 3>>& kept);
 
   const Vec3& point(Index v) const { return m_.points[v]; }
@@ -25,7 +26,7 @@ class LiveMesh {
   double quality(Index t) const { return quality_[t]; }
   Index num_slots() const { return m_.num_cells(); }
   Index num_points() const { return m_.num_points(); }
-  bool movable(Index v) const { return v >= fixed_nodes_; }
+  bool movable(Index v) const { return !pinned_[v]; }
   bool kept(Index a, Index b, Index c) const;
   const std::vector<Index>& incident(Index v) const { return incident_[v]; }
 
@@ -46,7 +47,7 @@ class LiveMesh {
   void detach(Index t);
 
   TetMesh& m_;
-  Index fixed_nodes_;
+  std::vector<char> pinned_;  // per node
   std::set<std::array<Index, 3>> kept_;  // sorted corners
   std::vector<std::vector<Index>> incident_;
   std::vector<char> alive_;

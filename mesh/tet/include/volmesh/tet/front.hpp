@@ -15,9 +15,10 @@
 //    crossed by a front edge or crosses a front face (exact predicates), is not positive, or
 //    exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
 //    corner) is kept; the auxiliary points it covers are deleted and the front updated.
-// When no face of the front can advance (a stall), the rest of the region is closed by the
-// projection mesher (projection.hpp) and merged in when its boundary matches the front's
-// triangles; `stalls` and `fallback_tets` say how often and how much.
+// When no face of the front can advance (a stall), the rest of the region is closed: one tet,
+// a fan from a point that sees the whole cavity, or the projection mesher's tets
+// (projection.hpp), merged in even where they cut the cavity's faces, by refining the tets
+// outside to match; the stats say how often and how much.
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,8 +61,17 @@ struct FrontStats {
   long long relaxed_tets = 0;
   long long aux_points = 0, aux_deleted = 0;  // live inside the regions at the start; deleted
   long long stalls = 0;         // regions whose front could not advance further
-  long long fallback_tets = 0;  // tets the projection mesher made in the stalled cavities
-  long long cavity_faces = 0;   // front faces handed to the projection mesher
+  long long fallback_tets = 0;  // tets that close the stalled cavities
+  long long cavity_faces = 0;   // front faces left by the stalls
+  long long largest_cavity = 0;  // faces of the largest stalled cavity
+  // Where the projection mesh of a cavity cuts its faces, the tets outside holding a cut face
+  // or edge are coned from their centroids: the cavity faces cut, the tets refined, the input
+  // boundary triangles cut (the enclosed volume is unchanged), and the points the fallback
+  // added (projection Steiner points, fan apexes, centroids).
+  long long split_cavity_faces = 0;
+  long long refined_tets = 0;
+  long long split_boundary_faces = 0;
+  long long steiner_points = 0;
   ImproveStats improve;
   // Seconds by stage: aux (the auxiliary points), front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
@@ -75,7 +85,8 @@ struct FrontResult {
 };
 
 // Throws InputError when h is not positive or too small for the domain (more than
-// kMaxAuxPoints auxiliary points), or when a stalled cavity cannot be closed conformingly.
+// kMaxAuxPoints auxiliary points), or when rounding to doubles inverts every projection of a
+// stalled cavity.
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress = {});
 
