@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -67,6 +68,12 @@ using Criteria = CGAL::Mesh_criteria_3<Tr>;
 
 Vec3 to_vec(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
+std::string number_text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 // Interface crossings on kSeedLines² lines along each axis, at least h apart.
 SeededDomain::Seeds seeds(const Domain& domain, const LabelledDomain& labelled, double h) {
   const Box3 box = domain.bounds();
@@ -106,13 +113,13 @@ Index find(std::vector<Index>& parent, Index i) {
 
 std::vector<InterfaceSurface> mesh_interfaces(const Domain& domain, double h) {
   if (!(h > 0.0) || !std::isfinite(h))
-    throw InputError("surface meshing: the size " + std::to_string(h) +
+    throw InputError("surface meshing: the size " + number_text(h) +
                      " must be positive and finite");
   const Box3 box = domain.bounds();
   const Vec3 e = box.size();
   const double box_area = 2.0 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
   if (box_area / (h * h) > kMaxFacets)
-    throw InputError("surface meshing: the size " + std::to_string(h) +
+    throw InputError("surface meshing: the size " + number_text(h) +
                      " is too small for the domain's bounds (more than 5e7 triangles)");
   const Vec3 pad = kSeedMargin * e + Vec3::Constant(h);
   const Vec3 lo = box.lo - pad, hi = box.hi + pad;
