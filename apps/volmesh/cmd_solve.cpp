@@ -287,7 +287,8 @@ Command add_solve_command(CLI::App& root) {
                                         "mesh the domain: " + meshers::mesher_names())
                             ->check(CLI::IsMember(mesher_names()));
   CLI::Option* level = app->add_option("--level", opt->level, "octree depth, the same inside as at the boundary, as in a study (grid: 2^level "
-                                          "cells per side)")
+                                          "cells per side; size methods: h = the octree cell edge "
+                                          "at that level)")
                            ->check(CLI::Range(0, 20));
   app->add_option("--domain", opt->domain,
                   "domain (builtin:NAME, surface, image, .json; default: the method's, " +
@@ -322,9 +323,10 @@ Command add_solve_command(CLI::App& root) {
     if (mesh->count() == 0 && method->count() == 0)
       throw CLI::ValidationError("--mesh or --method", "give a mesh (--mesh M) or a method "
                                                        "(--method X --domain D --level N)");
-    // A surface method meshes the surface as given; every other one needs its resolution.
+    // A surface method meshes the surface as given; every other one needs a level (a size
+    // method meshes at the octree cell edge of that level).
     if (method->count() > 0 && level->count() == 0 &&
-        meshers::find_mesher(opt->method).resolution == meshers::Resolution::level)
+        meshers::find_mesher(opt->method).resolution != meshers::Resolution::surface)
       throw CLI::ValidationError("--method " + opt->method, "needs --level");
   });
   return {app, [opt] { return run_solve(*opt); }};

@@ -80,7 +80,8 @@ Command add_study_command(CLI::App& root) {
                              ->check(CLI::IsMember(mesher_names()));
   method->excludes(methods);
   app->add_option("--levels", opt->levels, "levels A..B (octree depth, the same inside as at "
-                                           "the boundary; grid: 2^level cells per side)")
+                                           "the boundary; grid: 2^level cells per side; size "
+                                           "methods: h = the octree cell edge at that level)")
       ->required();
   app->add_option("--domain", opt->spec.domain,
                   "domain (default: the method's, " + default_domains() + ")");

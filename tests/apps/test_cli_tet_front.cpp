@@ -72,7 +72,6 @@ TEST(CliTetFront, BadInputExits1WithOneLineAndNoOutput) {
   std::ofstream(dir / "open.off")
       << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n";
   const std::vector<std::pair<std::string, std::string>> cases{
-      {"mesh tet-front builtin:ball --size 0.1", "not given by triangulated surfaces"},
       {"mesh tet-front " + kCube, "--size"},
       {"mesh tet-front " + kCube + " --size 1e-6", "too small"},
       {"mesh tet-front " + (dir / "crossing.off").string() + " --size 0.5", "triangles"},

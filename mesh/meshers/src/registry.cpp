@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "octree_request.hpp"
 #include "registration.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/octree/octree.hpp"
@@ -115,7 +116,14 @@ void check_options(const MesherInfo& info, const MethodOptions& options) {
   }
 }
 
-MeshResult mesh(const MesherInfo& info, const Domain& domain, const MeshRequest& request) {
+MeshResult mesh(const MesherInfo& info, const Domain& domain, const MeshRequest& given) {
+  MeshRequest request = given;
+  if (info.resolution == Resolution::size && request.uniform && request.level && !request.size) {
+    OctreeOptions at;
+    at.level = *request.level;
+    request.size = octree_cell_size(domain, at);
+    request.level.reset();
+  }
   check_options(info, request.options);
   require_resolution(info, request);
   if (request.uniform && request.options.contains("base-level"))

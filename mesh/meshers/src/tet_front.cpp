@@ -1,5 +1,6 @@
 // tet-front: the advancing-front mesher (mesh/tet/front, front.hpp) on a domain's triangulated
-// surfaces, with its shape figures.
+// surfaces (triangulated at h first for a domain without triangles, remeshed to h on request),
+// with its shape figures.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +13,7 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/quality/histogram.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
+#include "volmesh/surfacing/remesh.hpp"
 #include "volmesh/tet/front.hpp"
 
 namespace volmesh::meshers {
@@ -44,32 +46,67 @@ nlohmann::json shape_of(const TetMesh& m) {
            {{"bin_deg", kDihedralBinDegrees}, {"counts", low.histogram.counts}}}};
 }
 
+// Each surface remeshed to edge h (surfacing::remesh_isotropic); the figures over all of them.
+nlohmann::json remesh(std::vector<tet::ProjectionSurface>& surfaces, double h) {
+  long long sharp_edges = 0, before = 0;
+  double to_input = 0.0, from_input = 0.0;
+  for (tet::ProjectionSurface& p : surfaces) {
+    surfacing::Remeshed r = surfacing::remesh_isotropic(p.surface, h);
+    before += p.surface.num_triangles();
+    sharp_edges += r.sharp_edges;
+    to_input = std::max(to_input, r.hausdorff_to_input);
+    from_input = std::max(from_input, r.hausdorff_from_input);
+    p.surface = std::move(r.surface);
+  }
+  return {{"input_triangles", before},
+          {"sharp_edges", sharp_edges},
+          {"sharp_angle_deg", surfacing::kSharpAngleDegrees},
+          {"hausdorff", {{"to_input", to_input}, {"from_input", from_input}}}};
+}
+
 MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   auto clock = Clock::now();
-  report(request.progress, "checking the surfaces", 0.0);
-  const std::vector<tet::ProjectionSurface> surfaces =
-      triangulated_surfaces(domain, request.domain_name, kMethod);
   const double size = request.size.value_or(0.0);
   if (!(size > 0.0) || !std::isfinite(size))
     throw InputError(kMethod + ": --size " + std::to_string(size) + " must be positive and finite");
+  report(request.progress, "triangulating the boundary", 0.0);
+  BoundarySurfaces boundary = triangulated_surfaces(domain, request.domain_name, kMethod, size);
+  std::vector<tet::ProjectionSurface>& surfaces = boundary.surfaces;
+  const double surface_seconds = seconds_since(clock);
+  clock = Clock::now();
+  nlohmann::json boundary_json = {{"triangulated", boundary.triangulated}};
+  if (given<bool>(request.options, "remesh-surface").value_or(false)) {
+    report(request.progress, "remeshing the boundary", 0.0);
+    boundary_json["remeshed"] = remesh(surfaces, size);
+  }
+  const double remesh_seconds = seconds_since(clock);
+  clock = Clock::now();
+  report(request.progress, "checking the surfaces", 0.0);
   require_no_intersections(surfaces, request.domain_name, kMethod);
+  long long triangles = 0;
+  for (const tet::ProjectionSurface& p : surfaces) triangles += p.surface.num_triangles();
+  boundary_json["surfaces"] = surfaces.size();
+  boundary_json["triangles"] = triangles;
   const double check_seconds = seconds_since(clock);
   tet::FrontOptions options{.size = size};
   if (const auto n = given<std::int64_t>(request.options, "aux-ratio"))
     options.aux_ratio = static_cast<int>(*n);
   if (const auto k = given<std::int64_t>(request.options, "stop-after")) options.stop_after = *k;
-  const tet::FrontResult front =
+  tet::FrontResult front =
       tet::tetrahedralize_by_front(surfaces, options, part_of(request.progress, 0.05, 1.0));
+  drop_cavities(front.mesh, surfaces);
   const tet::FrontStats& s = front.stats;
   MeshResult r;
   r.mesh = to_poly_mesh(front.mesh);
   r.h = size;
-  nlohmann::json stages = {{"check", check_seconds}};
+  nlohmann::json stages = {
+      {"surface", surface_seconds}, {"remesh", remesh_seconds}, {"check", check_seconds}};
   for (const auto& [stage, seconds] : s.seconds) stages[stage] = seconds;
   stages["improve"] = s.improve.seconds;
-  r.summary = {{"tets", s.tets},
-               {"nodes", s.nodes},
+  r.summary = {{"tets", front.mesh.num_cells()},
+               {"nodes", front.mesh.num_points()},
                {"aux_ratio", options.aux_ratio},
+               {"boundary", boundary_json},
                {"front", {{"tets", s.front_tets},
                           {"new_nodes", s.new_nodes},
                           {"existing_node_tets", s.existing_node_tets},
@@ -112,6 +149,10 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::integer,
                  .min = kMinAuxRatio,
                  .max = kMaxAuxRatio},
+                {.name = "remesh-surface",
+                 .help = "remesh the boundary to edge h first (isotropic, sharp edges kept); "
+                         "--json gives the Hausdorff distance to the input",
+                 .type = OptionSpec::Type::flag},
                 {.name = "stop-after",
                  .help = "testing: stop each region's front after N tets, as if it stalled, so "
                          "that the rest is closed by the fallback",

@@ -16,6 +16,9 @@ namespace volmesh::meshers {
 namespace {
 
 const std::string kMethod = "tet-projection";
+// The range of --surface-size (surfacing::mesh_interfaces refuses sizes too small for the
+// domain's bounds).
+constexpr double kMinSurfaceSize = 1e-9, kMaxSurfaceSize = 1e9;
 
 tet::ProjectionOptions projection_options(const MethodOptions& options) {
   const std::string axis = given<std::string>(options, "axis").value_or("auto");
@@ -51,7 +54,9 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   auto clock = Clock::now();
   report(request.progress, "checking the surfaces", 0.0);
   const std::vector<tet::ProjectionSurface> surfaces =
-      triangulated_surfaces(domain, request.domain_name, kMethod);
+      triangulated_surfaces(domain, request.domain_name, kMethod,
+                            given<double>(request.options, "surface-size"))
+          .surfaces;
   require_no_intersections(surfaces, request.domain_name, kMethod);
   const double check_seconds = seconds_since(clock);
   // A prism too thin for doubles along one direction is not along another: with the axis
@@ -86,6 +91,7 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
       if (attempt + 1 == attempts.size()) throw;
     }
   }
+  drop_cavities(tets, surfaces);
   MeshResult r;
   r.mesh = to_poly_mesh(tets);
   const Box3 box = domain.bounds();
@@ -109,7 +115,13 @@ const Registration registered{MesherInfo{
                  .help = "projection axis (default auto: the one with the fewest vertical "
                          "triangles)",
                  .type = OptionSpec::Type::choice,
-                 .choices = {"x", "y", "z", "auto"}}},
+                 .choices = {"x", "y", "z", "auto"}},
+                {.name = "surface-size",
+                 .help = "for a domain not made of triangles (analytic, domain file, SDF grid, "
+                         "image): triangulate its surfaces at this edge first",
+                 .type = OptionSpec::Type::real,
+                 .min = kMinSurfaceSize,
+                 .max = kMaxSurfaceSize}},
     .default_domain = "builtin:schoenhardt",
     .default_space = "p1",
     .run = mesh_tet_projection,

@@ -31,7 +31,10 @@ enum class Resolution {
 
 struct MeshRequest {
   std::string domain_name;     // names the domain in messages ("builtin:ball", a file name)
-  std::optional<int> level;    // Resolution::level only
+  // Resolution::level; for a size method only in a uniform request (a study's or a solve's
+  // level), meshed at h = the octree cell edge at that level (the root cube's side / 2^level),
+  // so that the methods of a study are compared at the same h.
+  std::optional<int> level;
   std::optional<double> size;  // Resolution::size only
   // The same depth inside as at the boundaries (an octree's base level = level), as a
   // convergence study needs: a coarser interior would limit the rate. Octree methods only.
