@@ -11,18 +11,13 @@
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
+#include "front_surfaces.hpp"
 #include "volmesh/tet/front.hpp"
 
 namespace volmesh::tet {
 namespace {
 
-std::vector<ProjectionSurface> surfaces_of(std::vector<LabelledSurface> list) {
-  const SurfaceDomain domain(std::move(list));
-  std::vector<ProjectionSurface> out;
-  for (Index s = 0; s < static_cast<Index>(domain.labels().size()); ++s)
-    out.push_back({domain.surface(s), domain.labels()[s], domain.depths()[s] == 0});
-  return out;
-}
+using test::surfaces_of;
 
 std::vector<ProjectionSurface> builtin(const std::string& name) {
   return surfaces_of(builtin_surfaces(name));

@@ -19,6 +19,7 @@
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
+#include "front_surfaces.hpp"
 #include "volmesh/tet/front.hpp"
 
 namespace volmesh::tet {
@@ -26,13 +27,7 @@ namespace {
 
 using Tri = std::array<Index, 3>;
 
-std::vector<ProjectionSurface> surfaces_of(std::vector<LabelledSurface> list) {
-  const SurfaceDomain domain(std::move(list));
-  std::vector<ProjectionSurface> out;
-  for (Index s = 0; s < static_cast<Index>(domain.labels().size()); ++s)
-    out.push_back({domain.surface(s), domain.labels()[s], domain.depths()[s] == 0});
-  return out;
-}
+using test::surfaces_of;
 
 // Every input triangle in the mesh's numbering (the surfaces' points come first, in order).
 std::vector<Tri> input_triangles(const std::vector<ProjectionSurface>& surfaces, Index& points) {
