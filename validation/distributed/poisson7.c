@@ -1,7 +1,8 @@
 /* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
  * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
  * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (PMIS,
- * ext+i, P_max 4, strong threshold 0.25), relative residual 1e-8. Prints one JSON line:
+ * ext+i, P_max 4, strong threshold 0.25; -pc_hypre_* options given override them), relative
+ * residual 1e-8. Prints one JSON line:
  * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
  * Usage: poisson7 -n N [PETSc options]. */
 #include <petscdmda.h>
@@ -64,9 +65,16 @@ int main(int argc, char** argv) {
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCHYPRE));
   PetscCall(PCHYPRESetType(pc, "boomeramg"));
-  PetscCall(PetscOptionsInsertString(NULL,
-      "-pc_hypre_boomeramg_coarsen_type PMIS -pc_hypre_boomeramg_interp_type ext+i "
-      "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_strong_threshold 0.25"));
+  /* volmesh's scalar defaults; the command line's own -pc_hypre_* options win. */
+  const char* defaults[][2] = {{"-pc_hypre_boomeramg_coarsen_type", "PMIS"},
+                               {"-pc_hypre_boomeramg_interp_type", "ext+i"},
+                               {"-pc_hypre_boomeramg_P_max", "4"},
+                               {"-pc_hypre_boomeramg_strong_threshold", "0.25"}};
+  for (size_t i = 0; i < sizeof defaults / sizeof defaults[0]; ++i) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(NULL, NULL, defaults[i][0], &given));
+    if (!given) PetscCall(PetscOptionsSetValue(NULL, defaults[i][0], defaults[i][1]));
+  }
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
   PetscCall(PCSetUp(pc));

@@ -5,7 +5,8 @@
 #      seconds, parallel efficiency of the solver stages and of the whole run;
 #   2. the iteration counts over four refinement levels;
 #   3. the anchor: PETSc/hypre on a 7-point Poisson problem with as many unknowns
-#      (poisson7.c, the same BoomerAMG options), on 1 and 2 ranks.
+#      (poisson7.c) on 1 and 2 ranks, with our BoomerAMG defaults and with the 7-point
+#      stencil's classical tuning; ours is compared with the faster of the two.
 # DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶) and LEVELS ("4 5 6 7")
 # choose the case. Prints the report and writes it to $OUT/report.md (OUT=dir, default
 # build/validation-distributed).
@@ -40,8 +41,13 @@ for level in $LEVELS; do
     -ksp_rtol 1e-8 > "$OUT/level$level.json"
 done
 N=$(python3 -c "import json; print(round(json.load(open('$OUT/solve1.json'))['unknowns'] ** (1/3)))")
+# The anchor twice: with our defaults, and tuned the classical way for the 7-point stencil
+# (HMIS, threshold 0.5), which is its faster setting; ours is compared with the faster.
+TUNED="-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_strong_threshold 0.5"
 for np in 1 2; do
   $MPIRUN -np $np "$OUT/poisson7" -n "$N" > "$OUT/anchor$np.json"
+  # shellcheck disable=SC2086  # TUNED is a list of options
+  $MPIRUN -np $np "$OUT/poisson7" -n "$N" $TUNED > "$OUT/anchor-tuned$np.json"
 done
 
 python3 - "$OUT" "$LEVEL" "$LEVELS" <<'PY' | tee "$OUT/report.md"
@@ -50,6 +56,7 @@ out, level, levels = sys.argv[1], sys.argv[2], sys.argv[3].split()
 load = lambda name: json.load(open(f"{out}/{name}.json"))
 runs = {np: load(f"solve{np}") for np in (1, 2)}
 anchor = {np: load(f"anchor{np}") for np in (1, 2)}
+tuned = {np: load(f"anchor-tuned{np}") for np in (1, 2)}
 stages = ["mesh", "partition", "setup", "assembly", "preconditioner", "solve", "errors", "write"]
 r1 = runs[1]
 print(f"## Cut-cell Poisson, {r1['domain']} level {level}: {r1['cells']} cells, "
@@ -73,10 +80,20 @@ for l in levels:
     print(f"| {l} | {r['unknowns']} | {r['iterations']} | {r['seconds']['preconditioner']:.2f} | "
           f"{r['seconds']['solve']:.2f} |")
 print("\n## Anchor: PETSc/hypre 7-point Poisson of the same size (poisson7.c)\n")
-print("| ranks | unknowns | iterations | assembly s | preconditioner s | solve s | ours / anchor (preconditioner + solve) |")
+print("Our defaults (PMIS, threshold 0.25), and the 7-point stencil's classical tuning (HMIS, 0.5).\n")
+print("| ranks | BoomerAMG | unknowns | iterations | assembly s | preconditioner s | solve s |")
 print("|---|---|---|---|---|---|---|")
-for np, a in anchor.items():
-    ratio = solver(runs[np]) / (a["preconditioner"] + a["solve"])
-    print(f"| {np} | {a['unknowns']} | {a['iterations']} | {a['assembly']:.2f} | "
-          f"{a['preconditioner']:.2f} | {a['solve']:.2f} | {ratio:.2f} |")
+cost = lambda a: a["preconditioner"] + a["solve"]
+for np in (1, 2):
+    for name, a in (("PMIS 0.25", anchor[np]), ("HMIS 0.5", tuned[np])):
+        print(f"| {np} | {name} | {a['unknowns']} | {a['iterations']} | {a['assembly']:.2f} | "
+              f"{a['preconditioner']:.2f} | {a['solve']:.2f} |")
+print("\n| ranks | ours / faster anchor, preconditioner + solve | ours / faster anchor, solve only |")
+print("|---|---|---|")
+best = {np: min(anchor[np], tuned[np], key=cost) for np in (1, 2)}
+for np in (1, 2):
+    print(f"| {np} | {solver(runs[np]) / cost(best[np]):.2f} | "
+          f"{runs[np]['seconds']['solve'] / best[np]['solve']:.2f} |")
+print(f"\n2-rank efficiency of preconditioner + solve: ours {solver(runs[1]) / (2 * solver(runs[2])):.2f}, "
+      f"the faster anchor's {cost(best[1]) / (2 * cost(best[2])):.2f}")
 PY
