@@ -12,7 +12,6 @@ or timed out: 124), NAME.err (the refusal), NAME.time (/usr/bin/time "%e %U %S")
 NAME.check.json (`volmesh check --json`) when a mesh was written. Per TetGen run:
 NAME.tetgen ("exit nodes tets"), NAME.tetgen.time, NAME.tetgen.log.
 """
-import importlib.util
 import json
 import math
 import sys
@@ -24,18 +23,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def _hexdc_report():
-    """validation/hexdc/report.py, whose markdown table, CSV/JSON rows and refusal reading
-    this report shares."""
-    path = Path(__file__).resolve().parent.parent / "hexdc" / "report.py"
-    spec = importlib.util.spec_from_file_location("hexdc_report", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+# validation/hexdc/report.py: the markdown table, CSV/JSON rows and refusal reading shared.
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from hexdc.report import table, write_rows, refusal, DASH  # noqa: E402
 
-
-_HEXDC = _hexdc_report()
-table, write_rows, refusal, DASH = _HEXDC.table, _HEXDC.write_rows, _HEXDC.refusal, _HEXDC.DASH
 
 TIMEOUT_EXIT = 124
 SCHOENHARDT_LIMIT_DEG = 180.0 - 360.0 / 3  # surfaces.py twist-limit 3
