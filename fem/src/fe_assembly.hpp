@@ -14,6 +14,7 @@ namespace volmesh::fem::detail {
 // Scratch of one thread's local computations.
 struct LocalWork {
   CellPoints stiffness, load;
+  CellPieces pieces;
   // Over the cell's outer then internal nodes, `components` unknowns per node (node-major).
   Eigen::MatrixXd k;
   Eigen::VectorXd f;

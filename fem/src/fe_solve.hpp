@@ -119,12 +119,14 @@ inline const CellPoints& load_points(const FeSpace& space, Index c, LocalWork& w
 
 // A solved field: its space, the cells' internal rows (which recover the condensed internal
 // unknowns) and the nodal unknowns. own_cell: in a distributed solve, the cells this rank
-// evaluates (the others have no internal rows here); empty: all.
+// evaluates (the others have no internal rows here); empty: all. node_owner: in a distributed
+// solve, the rank owning each node; empty otherwise.
 struct SolvedField {
   std::unique_ptr<FeSpace> space;
   InternalRows internal_rows;
   Eigen::VectorXd u;
   std::vector<char> own_cell;
+  std::vector<int> node_owner;
 };
 
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
@@ -188,20 +190,25 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
                                   report)
               : solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options,
                                       report, {C, &space.node_point});
+  out.node_owner = std::move(distribution.node_owner);
   report.setup_seconds += space_seconds + boundary_seconds;
   report.assembly_seconds += assembly_seconds;
   return out;
 }
 
-// The largest |u − u_h| at the nodes.
+// The largest |u − u_h| at the nodes, in parallel; in a distributed solve each rank takes
+// the nodes it owns and the ranks agree on the largest.
 template <int C, class Exact>
 double nodal_max_error(const SolvedField& field, const Exact& exact) {
-  double out = 0.0;
-  for (Index n = 0; n < field.space->num_nodes(); ++n)
-    out = std::max(out, (as_node_vector(exact(field.space->node_point[n])) -
-                         field.u.segment<C>(C * Eigen::Index(n)))
-                            .norm());
-  return out;
+  const bool distributed = !field.node_owner.empty();
+  const int me = distributed ? rank() : 0;
+  const double mine = largest_of(field.space->num_nodes(), [&](Index n) {
+    if (distributed && field.node_owner[n] != me) return 0.0;
+    return (as_node_vector(exact(field.space->node_point[n])) -
+            field.u.segment<C>(C * Eigen::Index(n)))
+        .norm();
+  });
+  return distributed ? max_over_ranks(mine) : mine;
 }
 
 // u_h and its gradient (row i: ∇ of component i) at a quadrature point.
@@ -210,6 +217,54 @@ struct PointValue {
   NodeVector<C> u;
   Eigen::Matrix<double, C, 3> gradient;
 };
+
+// fn(c, x, weight, value, result) at each point of cell c's pieces (CellPieces): u_h from
+// the corner values, its gradient constant on a piece.
+template <int C, class CellResult, class Fn>
+void integrate_pieces(const CellPieces& q, const Eigen::VectorXd& local_u, Index c, const Fn& fn,
+                      CellResult& r) {
+  for (std::size_t i = 0; i < q.pieces.size(); ++i) {
+    const CellPieces::Piece& piece = q.pieces[i];
+    std::array<NodeVector<C>, 4> corner;
+    PointValue<C> v;
+    v.gradient.setZero();
+    for (int k = 0; k < 4; ++k) {
+      corner[k].setZero();
+      for (int j = q.term_begin[4 * i + k]; j < q.term_begin[4 * i + k + 1]; ++j)
+        corner[k] += q.coefficient[j] * local_u.segment<C>(C * q.node[j]);
+      v.gradient += corner[k] * piece.affine.gradient[k].transpose();
+    }
+    const auto& x = piece.corners;
+    for (const auto& p : q.rule) {
+      const auto& l = p.barycentric;
+      const Vec3 at = l[0] * x[0] + l[1] * x[1] + l[2] * x[2] + l[3] * x[3];
+      const double w = piece.affine.volume * p.weight;
+      v.u = l[0] * corner[0] + l[1] * corner[1] + l[2] * corner[2] + l[3] * corner[3];
+      r.volume += w;
+      fn(c, at, w, v, r);
+    }
+  }
+}
+
+// fn(c, x, weight, value, result) at each of cell c's points in q, u_h from its shape data.
+template <int C, class CellResult, class Fn>
+void integrate_points(const CellPoints& q, const Eigen::VectorXd& local_u, Index c, const Fn& fn,
+                      CellResult& r) {
+  for_each_point(q, [&](int p, const int* nodes, int count) {
+    const double* value = q.value.data() + q.shape_begin[p];
+    const Vec3* grad = q.gradient.data() + q.shape_begin[p];
+    PointValue<C> v;
+    v.u.setZero();
+    v.gradient.setZero();
+    for (int a = 0; a < count; ++a) {
+      const NodeVector<C> ua = local_u.segment<C>(C * nodes[a]);
+      v.u += value[a] * ua;
+      v.gradient += ua * grad[a].transpose();
+    }
+    r.volume += q.weight[p];
+    fn(c, q.x[p], q.weight[p], v, r);
+  });
+}
 
 // Per cell, in parallel: fn(c, x, weight, value, result) at each point of the cell's
 // `rule`, u_h from the solved field; result.volume sums the weights. Results in cell order.
@@ -222,23 +277,10 @@ std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, con
     if (!field.own_cell.empty() && !field.own_cell[c]) return;
     Eigen::VectorXd local_u;
     cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
+    if (field.space->cell_pieces(c, rule, work.pieces))
+      return integrate_pieces<C>(work.pieces, local_u, c, fn, out[c]);
     field.space->cell_points(c, rule, work.load);
-    const CellPoints& q = work.load;
-    CellResult& r = out[c];
-    for_each_point(q, [&](int p, const int* nodes, int count) {
-      const double* value = q.value.data() + q.shape_begin[p];
-      const Vec3* grad = q.gradient.data() + q.shape_begin[p];
-      PointValue<C> v;
-      v.u.setZero();
-      v.gradient.setZero();
-      for (int a = 0; a < count; ++a) {
-        const NodeVector<C> ua = local_u.segment<C>(C * nodes[a]);
-        v.u += value[a] * ua;
-        v.gradient += ua * grad[a].transpose();
-      }
-      r.volume += q.weight[p];
-      fn(c, q.x[p], q.weight[p], v, r);
-    });
+    integrate_points<C>(work.load, local_u, c, fn, out[c]);
   });
   if (!field.own_cell.empty()) {
     static_assert(sizeof(CellResult) % sizeof(double) == 0, "a cell result is doubles only");

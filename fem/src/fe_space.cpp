@@ -41,6 +41,17 @@ int CellPoints::add_point(double w, const Vec3& at) {
   return static_cast<int>(weight.size()) - 1;
 }
 
+void CellPieces::clear() {
+  pieces.clear();
+  term_begin.assign(1, 0);
+  node.clear();
+  coefficient.clear();
+}
+
+void CellPieces::add_piece(std::span<const Vec3, 4> corners, const TetAffine& affine) {
+  pieces.push_back({{corners[0], corners[1], corners[2], corners[3]}, affine});
+}
+
 void FacePoints::clear() {
   nodes.clear();
   weight.clear();
@@ -144,6 +155,16 @@ Index first_cell_where(Index num_cells, const std::function<bool(Index)>& bad) {
       },
       [](Index a, Index b) { return std::min(a, b); });
   return first == none ? kNoIndex : first;
+}
+
+double largest_of(Index count, const std::function<double(Index)>& value) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, count), 0.0,
+      [&](const tbb::blocked_range<Index>& r, double largest) {
+        for (Index i = r.begin(); i != r.end(); ++i) largest = std::max(largest, value(i));
+        return largest;
+      },
+      [](double a, double b) { return std::max(a, b); });
 }
 
 }  // namespace volmesh::fem::detail

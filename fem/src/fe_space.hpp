@@ -12,6 +12,8 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/fem/fem.hpp"
+#include "volmesh/fem/lagrange.hpp"
+#include "volmesh/fem/quadrature.hpp"
 
 namespace volmesh::fem::detail {
 
@@ -57,6 +59,36 @@ struct CellPoints {
   }
 };
 
+// A cell on which u_h is affine on each of a set of tetrahedra (the polyhedral space's
+// sub-tetrahedra, a P1 tet): per piece its corners, volume and barycentric gradients, and u_h
+// at each corner as a combination of local nodes. The integrals after a solve evaluate u_h
+// from four corner values per piece and one gradient, not from shape data per point; the
+// points are the pieces' images of `rule`, at the same positions and weights as
+// FeSpace::cell_points gives.
+struct CellPieces {
+  struct Piece {
+    std::array<Vec3, 4> corners;
+    TetAffine affine;
+  };
+  std::span<const TetQuadraturePoint> rule;
+  std::vector<Piece> pieces;
+  // Corner k of piece i is Σ coefficient[j] · (local node node[j]) for j in
+  // [term_begin[4i + k], term_begin[4i + k + 1]).
+  std::vector<int> term_begin{0};
+  std::vector<int> node;
+  std::vector<double> coefficient;
+
+  void clear();
+  void add_piece(std::span<const Vec3, 4> corners, const TetAffine& affine);
+  // Adds a term to the corner being described; end_corner closes it (four per piece, in
+  // corner order).
+  void add_term(int local_node, double c) {
+    node.push_back(local_node);
+    coefficient.push_back(c);
+  }
+  void end_corner() { term_begin.push_back(static_cast<int>(node.size())); }
+};
+
 // Quadrature points of a boundary face.
 struct FacePoints {
   std::vector<Index> nodes;  // global nodes whose shape functions live on the face
@@ -82,6 +114,9 @@ class FeSpace {
   // Nodes of each cell beyond cell_nodes (condensed statically): the same for every cell.
   virtual int internal_nodes() const { return 0; }
   virtual void cell_points(Index c, Rule rule, CellPoints& out) const = 0;
+  // Cell c as affine pieces for `rule`, when u_h is affine piece by piece there; false (out
+  // unspecified) when it is not, and cell_points must serve.
+  virtual bool cell_pieces(Index, Rule, CellPieces&) const { return false; }
   // Whether cell c's load points are its stiffness points, so that one computation serves both.
   virtual bool load_is_stiffness(Index) const { return false; }
   // The nodes of boundary face f.
@@ -118,5 +153,8 @@ std::vector<std::array<Index, 8>> element_corners(const PolyMesh& mesh, CellShap
 // The smallest cell index c < num_cells with bad(c), or kNoIndex; tested in parallel, so that
 // a message names the same cell for any thread count.
 Index first_cell_where(Index num_cells, const std::function<bool(Index)>& bad);
+
+// The largest value(i) over i in [0, count) (0 when count is 0), computed in parallel.
+double largest_of(Index count, const std::function<double(Index)>& value);
 
 }  // namespace volmesh::fem::detail

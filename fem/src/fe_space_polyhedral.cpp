@@ -22,6 +22,9 @@
 namespace volmesh::fem::detail {
 namespace {
 
+// The degree of the error integrals' rule on each sub-tetrahedron.
+constexpr int kAccurateDegree = 5;
+
 void sorted_cell_vertices(const PolyMesh& mesh, std::span<const Index> faces,
                           std::vector<Index>& out) {
   out.clear();
@@ -91,56 +94,58 @@ class PolyhedralSpace final : public FeSpace {
   void cell_points(Index c, Rule rule, CellPoints& out) const override {
     out.clear();
     if (virtual_of_[c] != kNoIndex) return virtual_points(virtual_[virtual_of_[c]], c, rule, out);
-    const std::span<const Index> vertices = cell_vertices(c);
-    const int cell_node = static_cast<int>(vertices.size());
-    // Loads at each sub-tetrahedron's centroid: exact for linear data, which is what the
-    // second order in L2 needs of P1 (a rule exact on polynomials of degree 2k − 2, Ciarlet),
-    // at a quarter of the source evaluations of the 4-point rule.
-    const auto rule_points = tet_rule(rule == Rule::accurate ? 5 : 1);
-    Index current_face = kNoIndex;
-    // Vertices of the current face; its group holds them in loop order, then the cell node.
-    int n = 0;
-    std::vector<int> group;
-    for_each_sub_tetrahedron(
-        mesh_, splits_, cell_faces_.of(c), c, apex_[c], [&](const SubTetrahedron& t) {
-          if (t.face != current_face) {
-            current_face = t.face;
-            const auto loop = mesh_.face(t.face);
-            n = static_cast<int>(loop.size());
-            group.clear();
-            for (Index v : loop)
-              group.push_back(static_cast<int>(
-                  std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin()));
-            group.push_back(cell_node);
-            out.begin_group(group);
+    const auto rule_points = points_of(rule);
+    for_each_piece(c, [&](const SubTetrahedron& t, const std::vector<int>& group, bool new_face) {
+      // The group holds the face's vertices in loop order, then the cell node.
+      const int n = static_cast<int>(group.size()) - 1;
+      if (new_face) out.begin_group(group);
+      const TetAffine a = tet_affine(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
+      const double spread = 1.0 / n;
+      for (const auto& q : rule_points) {
+        const auto& l = q.barycentric;
+        const Vec3 at = l[0] * t.corners[0] + l[1] * t.corners[1] + l[2] * t.corners[2] +
+                        l[3] * t.corners[3];
+        const int i = out.add_point(a.volume * q.weight, at);
+        auto value = out.values(i);
+        auto gradient = out.gradients(i);
+        value[n] += l[0];
+        gradient[n] += a.gradient[0];
+        value[t.p] += l[1];
+        gradient[t.p] += a.gradient[1];
+        value[t.q] += l[2];
+        gradient[t.q] += a.gradient[2];
+        if (t.fanned) {
+          // The face node's shape function is shared equally by the face's vertices.
+          for (int k = 0; k < n; ++k) {
+            value[k] += spread * l[3];
+            gradient[k] += spread * a.gradient[3];
           }
-          const TetAffine a = tet_affine(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);
-          const double spread = 1.0 / n;
-          for (const auto& q : rule_points) {
-            const auto& l = q.barycentric;
-            const Vec3 at = l[0] * t.corners[0] + l[1] * t.corners[1] + l[2] * t.corners[2] +
-                            l[3] * t.corners[3];
-            const int i = out.add_point(a.volume * q.weight, at);
-            auto value = out.values(i);
-            auto gradient = out.gradients(i);
-            value[n] += l[0];
-            gradient[n] += a.gradient[0];
-            value[t.p] += l[1];
-            gradient[t.p] += a.gradient[1];
-            value[t.q] += l[2];
-            gradient[t.q] += a.gradient[2];
-            if (t.fanned) {
-              // The face node's shape function is shared equally by the face's vertices.
-              for (int k = 0; k < n; ++k) {
-                value[k] += spread * l[3];
-                gradient[k] += spread * a.gradient[3];
-              }
-            } else {
-              value[t.r] += l[3];
-              gradient[t.r] += a.gradient[3];
-            }
-          }
-        });
+        } else {
+          value[t.r] += l[3];
+          gradient[t.r] += a.gradient[3];
+        }
+      }
+    });
+  }
+
+  bool cell_pieces(Index c, Rule rule, CellPieces& out) const override {
+    if (virtual_of_[c] != kNoIndex) return false;
+    out.clear();
+    out.rule = points_of(rule);
+    for_each_piece(c, [&](const SubTetrahedron& t, const std::vector<int>& group, bool) {
+      const int n = static_cast<int>(group.size()) - 1;
+      out.add_piece(t.corners, tet_affine(t.corners[0], t.corners[1], t.corners[2], t.corners[3]));
+      for (const int corner : {n, t.p, t.q}) {
+        out.add_term(group[corner], 1.0);
+        out.end_corner();
+      }
+      if (t.fanned)
+        for (int k = 0; k < n; ++k) out.add_term(group[k], 1.0 / n);
+      else
+        out.add_term(group[t.r], 1.0);
+      out.end_corner();
+    });
+    return true;
   }
 
   void face_nodes(Index f, std::vector<Index>& out) const override {
@@ -193,6 +198,37 @@ class PolyhedralSpace final : public FeSpace {
   }
 
  private:
+  // Loads at each sub-tetrahedron's centroid: exact for linear data, which is what the second
+  // order in L2 needs of P1 (a rule exact on polynomials of degree 2k − 2, Ciarlet), at a
+  // quarter of the source evaluations of the 4-point rule.
+  static std::span<const TetQuadraturePoint> points_of(Rule rule) {
+    return tet_rule(rule == Rule::accurate ? kAccurateDegree : 1);
+  }
+
+  // Calls fn(t, group, new_face) for every sub-tetrahedron t of the star-shaped cell c, group
+  // being the local nodes of t's face (its vertices in loop order, then the cell node) and
+  // new_face whether t is the first of its face.
+  template <class Fn>
+  void for_each_piece(Index c, Fn&& fn) const {
+    const std::span<const Index> vertices = cell_vertices(c);
+    const int cell_node = static_cast<int>(vertices.size());
+    Index current_face = kNoIndex;
+    std::vector<int> group;
+    for_each_sub_tetrahedron(
+        mesh_, splits_, cell_faces_.of(c), c, apex_[c], [&](const SubTetrahedron& t) {
+          const bool new_face = t.face != current_face;
+          if (new_face) {
+            current_face = t.face;
+            group.clear();
+            for (Index v : mesh_.face(t.face))
+              group.push_back(static_cast<int>(
+                  std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin()));
+            group.push_back(cell_node);
+          }
+          fn(t, group, new_face);
+        });
+  }
+
   // The virtual element's points: its projection Π u_h, exact for the consistency term in one
   // point at the centroid, on signed cones from the vertex average for loads and errors; the
   // stabilisation h_E Σ_l ((I − Π)u)(x_l) ((I − Π)v)(x_l) over its vertices (the "dofi-dofi"
@@ -227,7 +263,7 @@ class PolyhedralSpace final : public FeSpace {
       out.stabilization_rows.push_back(1.0);
       return;
     }
-    const auto rule_points = tet_rule(rule == Rule::accurate ? 5 : 1);
+    const auto rule_points = points_of(rule);
     for_each_sub_tetrahedron(
         mesh_, splits_, cell_faces_.of(c), c, e.vertex_average, [&](const SubTetrahedron& t) {
           const double volume = tet_volume(t.corners[0], t.corners[1], t.corners[2], t.corners[3]);

@@ -98,6 +98,21 @@ class TetSpace final : public FeSpace {
     }
   }
 
+  bool cell_pieces(Index c, Rule rule, CellPieces& out) const override {
+    if (quadratic_) return false;
+    out.clear();
+    out.rule = tet_rule(degree(rule));
+    const auto& t = corners_[c];
+    const std::array<Vec3, 4> p{mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]],
+                                mesh_.points[t[3]]};
+    out.add_piece(p, tet_affine(p[0], p[1], p[2], p[3]));
+    for (int k = 0; k < 4; ++k) {
+      out.add_term(k, 1.0);
+      out.end_corner();
+    }
+    return true;
+  }
+
   bool load_is_stiffness(Index c) const override { return is_curved(c); }
 
   void face_nodes(Index f, std::vector<Index>& out) const override {

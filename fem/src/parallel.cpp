@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
 
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/types.hpp"
@@ -175,11 +177,32 @@ void barrier() {
   if (ranks() > 1) MPI_Barrier(PETSC_COMM_WORLD);
 }
 
+namespace {
+
+// How long a rank waiting for the others sleeps between looks: short beside any stage, long
+// enough that the waiting costs no core.
+constexpr auto kIdlePoll = std::chrono::milliseconds(1);
+
+// Returns once every rank has called it, sleeping meanwhile: Open MPI's blocking collectives
+// poll a core, which the rank still working (rank 0 meshing, with its threads) needs.
+void wait_for_every_rank() {
+  MPI_Request request;
+  MPI_Ibarrier(PETSC_COMM_WORLD, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(kIdlePoll);
+  }
+}
+
+}  // namespace
+
 void agree(const std::string& error) {
   if (ranks() == 1) {
     if (!error.empty()) throw InputError(error);
     return;
   }
+  wait_for_every_rank();
   int failed = error.empty() ? ranks() : rank();
   MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
   if (failed == ranks()) return;
