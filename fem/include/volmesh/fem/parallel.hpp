@@ -59,7 +59,8 @@ void barrier();
 // Agrees on a stage's outcome: `error` is this rank's failure ("" for none). When any rank
 // failed, every rank throws InputError with the lowest failing rank's message, so that all
 // exit together and rank 0 prints it; a rank-0-only stage (meshing) ends with this so that
-// the others do not wait for a broadcast that never comes.
+// the others do not wait for a broadcast that never comes. Ranks that arrive early sleep in
+// short steps rather than poll a core, so rank 0's serial stages keep a core to themselves.
 void agree(const std::string& error);
 
 }  // namespace volmesh::fem
