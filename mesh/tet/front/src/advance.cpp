@@ -120,7 +120,7 @@ class Front {
     const Tri t = faces_[f];
     const std::array<Vec3, 3> p{pts_[t[0]], pts_[t[1]], pts_[t[2]]};
     const double reach = kCandidateRadius * h_;
-    const std::set<Index> near = nodes_near(t, reach);
+    const std::vector<Index> near = nodes_near(t, reach);
     const auto [existing, existing_q] = best_existing(t, near, reach, Tests::all);
     if (existing != kNoIndex && existing_q >= kGoodQuality) {
       ++out.existing_node_tets;
@@ -161,36 +161,45 @@ class Front {
     return false;
   }
 
-  // The front nodes within `reach` of face t's box, t's corners excepted.
-  std::set<Index> nodes_near(const Tri& t, double reach) {
+  // The front nodes within `reach` of face t's box, t's corners excepted, each once, in no
+  // particular order.
+  std::vector<Index> nodes_near(const Tri& t, double reach) {
     Vec3 lo = pts_[t[0]].cwiseMin(pts_[t[1]]).cwiseMin(pts_[t[2]]);
     Vec3 hi = pts_[t[0]].cwiseMax(pts_[t[1]]).cwiseMax(pts_[t[2]]);
-    std::set<Index> near;
-    for (const Index g :
-         faces_near(grid_, lo - Vec3::Constant(reach), hi + Vec3::Constant(reach), live_))
+    std::vector<Index> near;
+    faces_near(grid_, lo - Vec3::Constant(reach), hi + Vec3::Constant(reach), live_, nearby_);
+    node_stamp_.resize(pts_.size(), 0);
+    ++node_query_;
+    for (const Index v : t) node_stamp_[v] = node_query_;
+    for (const Index g : nearby_)
       for (const Index v : faces_[g])
-        if (v != t[0] && v != t[1] && v != t[2]) near.insert(v);
+        if (node_stamp_[v] != node_query_) {
+          node_stamp_[v] = node_query_;
+          near.push_back(v);
+        }
     return near;
   }
 
   // The best tet joining t to a node of `near` within `reach` of its corners, and its quality
-  // (kNoIndex and 0 if none passes).
-  std::pair<Index, double> best_existing(const Tri& t, const std::set<Index>& near, double reach,
-                                         Tests tests) {
-    Index best = kNoIndex;
-    double best_q = 0.0;
+  // (kNoIndex and 0 if none passes): the best shape that passes the tests, the least index
+  // among equals. The tests, the costly part, run in order of shape until one passes.
+  std::pair<Index, double> best_existing(const Tri& t, const std::vector<Index>& near,
+                                         double reach, Tests tests) {
+    ranked_.clear();
     for (const Index d : near) {
       const Vec3& q = pts_[d];
       if ((q - pts_[t[0]]).norm() > reach || (q - pts_[t[1]]).norm() > reach ||
           (q - pts_[t[2]]).norm() > reach)
         continue;
-      const double qd = tet_quality(t, d, q, best_q, tests);
-      if (qd > best_q) {
-        best = d;
-        best_q = qd;
-      }
+      const double qd = shape(t, q, tests);
+      if (qd > kMinQuality) ranked_.emplace_back(qd, d);
     }
-    return {best, best_q};
+    std::sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) {
+      return a.first > b.first || (a.first == b.first && a.second < b.second);
+    });
+    for (const auto& [qd, d] : ranked_)
+      if (passes(t, d, pts_[d], tests)) return {d, qd};
+    return {kNoIndex, 0.0};
   }
 
   void mark_failed(Index f) {
@@ -203,16 +212,27 @@ class Front {
  private:
   // The quality of tet (t, d) with d at q if it passes every test and beats `floor`, else 0.
   double tet_quality(const Tri& t, Index d, const Vec3& q, double floor, Tests tests) {
+    const double qd = shape(t, q, tests);
+    if (qd <= std::max(floor, kMinQuality)) return 0.0;
+    return passes(t, d, q, tests) ? qd : 0.0;
+  }
+
+  // The quality of tet (t, q) if it is positive (and within Vmax for Tests::all), else 0.
+  double shape(const Tri& t, const Vec3& q, Tests tests) const {
     const std::array<Vec3, 4> p{pts_[t[0]], pts_[t[1]], pts_[t[2]], q};
     if (!positive(p[0], p[1], p[2], p[3])) return 0.0;
     const double volume = (p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) / 6.0;
     if (tests == Tests::all && volume > vmax_) return 0.0;
-    const double qd = quality(p, volume);
-    if (qd <= std::max(floor, kMinQuality)) return 0.0;
+    return quality(p, volume);
+  }
+
+  // Whether tet (t, d) with d at q, positive, passes the tests beyond its shape.
+  bool passes(const Tri& t, Index d, const Vec3& q, Tests tests) {
+    const std::array<Vec3, 4> p{pts_[t[0]], pts_[t[1]], pts_[t[2]], q};
     // A front face on the tet facing out of it: the other side of it is meshed already.
     const Tet corners{t[0], t[1], t[2], d};
     for (const auto& f : kFaces)
-      if (by_key_.count(canonical({corners[f[0]], corners[f[1]], corners[f[2]]}))) return 0.0;
+      if (by_key_.count(canonical({corners[f[0]], corners[f[1]], corners[f[2]]}))) return false;
     const std::array<Corner, 4> tet{Corner{p[0], t[0]}, Corner{p[1], t[1]}, Corner{p[2], t[2]},
                                     Corner{q, d}};
     Vec3 lo = p[0], hi = p[0];
@@ -220,15 +240,14 @@ class Front {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    for (const Index g : faces_near(grid_, lo, hi, live_)) {
-      if (!live_[g]) continue;
+    faces_near(grid_, lo, hi, live_, nearby_);
+    for (const Index g : nearby_) {
       const Tri& u = faces_[g];
       if (tet_meets_triangle(tet, {Corner{pts_[u[0]], u[0]}, Corner{pts_[u[1]], u[1]},
                                    Corner{pts_[u[2]], u[2]}}))
-        return 0.0;
+        return false;
     }
-    if (tests == Tests::all && deleted_strictly_inside(aux_, p)) return 0.0;
-    return qd;
+    return tests != Tests::all || !deleted_strictly_inside(aux_, p);
   }
 
   void add_tet(const Tet& tet, RegionFront& out) {
@@ -332,6 +351,11 @@ class Front {
   std::vector<int> node_live_;
   std::vector<long long> estimate_;
   std::set<std::pair<long long, Index>> order_;  // the front nodes by estimate
+  // Buffers reused by the candidate tests.
+  std::vector<Index> nearby_;
+  std::vector<std::pair<double, Index>> ranked_;
+  std::vector<unsigned> node_stamp_;  // by point: the nodes_near query that last listed it
+  unsigned node_query_ = 0;
 };
 
 // Progress is reported every this many tets.

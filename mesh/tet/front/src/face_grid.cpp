@@ -41,10 +41,10 @@ void insert_face(FaceGrid& g, Index face, const Vec3& lo, const Vec3& hi) {
   if (static_cast<std::size_t>(face) >= g.stamp.size()) g.stamp.resize(face + 1, 0);
 }
 
-std::vector<Index> faces_near(FaceGrid& g, const Vec3& lo, const Vec3& hi,
-                              const std::vector<char>& live) {
+void faces_near(FaceGrid& g, const Vec3& lo, const Vec3& hi, const std::vector<char>& live,
+                std::vector<Index>& out) {
   ++g.query;
-  std::vector<Index> out;
+  out.clear();
   const auto r = cells_of(g, lo, hi);
   for (long long k = r[2][0]; k <= r[2][1]; ++k)
     for (long long j = r[1][0]; j <= r[1][1]; ++j)
@@ -57,7 +57,6 @@ std::vector<Index> faces_near(FaceGrid& g, const Vec3& lo, const Vec3& hi,
             out.push_back(f);
           }
       }
-  return out;
 }
 
 }  // namespace volmesh::tet::front

@@ -23,8 +23,15 @@ FaceGrid make_face_grid(const Vec3& lo, const Vec3& hi, double cell);
 void insert_face(FaceGrid& grid, Index face, const Vec3& lo, const Vec3& hi);
 
 // The live faces (live[f] != 0) listed in the cells overlapping [lo, hi], each once, in no
-// particular order.
-std::vector<Index> faces_near(FaceGrid& grid, const Vec3& lo, const Vec3& hi,
-                              const std::vector<char>& live);
+// particular order, into `out` (cleared first).
+void faces_near(FaceGrid& grid, const Vec3& lo, const Vec3& hi, const std::vector<char>& live,
+                std::vector<Index>& out);
+
+inline std::vector<Index> faces_near(FaceGrid& grid, const Vec3& lo, const Vec3& hi,
+                                     const std::vector<char>& live) {
+  std::vector<Index> out;
+  faces_near(grid, lo, hi, live, out);
+  return out;
+}
 
 }  // namespace volmesh::tet::front
