@@ -127,6 +127,7 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
                                        {"4-4", s.improve.flips_4_4},
                                        {"edge_removal", s.improve.edge_removals}}},
                             {"nodes_moved", s.improve.nodes_moved},
+                            {"collapses", s.improve.collapses},
                             {"min_dihedral_deg", {{"before", s.improve.min_dihedral_before},
                                                   {"after", s.improve.min_dihedral_after}}},
                             {"radius_edge_max", {{"before", s.improve.radius_edge_before},

@@ -18,6 +18,10 @@ constexpr int kMaxRing = 7;
 // rounding noise never counts as a gain, so that the passes end.
 constexpr double kMinGain = 1e-9;
 
+// Only edges shorter than this fraction of the mean edge at the node are collapsed, so that
+// the mesh keeps its size: the short edges are those the fallback's cavity mesh and cones make.
+constexpr double kShortEdge = 0.6;
+
 constexpr double kWorst = -std::numeric_limits<double>::max();
 
 double min_quality(const LiveMesh& mesh, const std::vector<Index>& tets) {
@@ -128,6 +132,34 @@ bool flip_2_3(LiveMesh& mesh, Index t, int face) {
   if (!(q > min_quality(mesh, pair) + kMinGain)) return false;
   if (!all_positive(mesh, fresh)) return false;
   mesh.replace(pair, fresh);
+  return true;
+}
+
+bool collapse_edge(LiveMesh& mesh, Index a, Index b) {
+  if (!mesh.movable(a)) return false;
+  const std::vector<Index> star = mesh.incident(a);
+  double sum = 0.0;
+  int edges = 0;
+  for (const Index t : star)
+    for (const Index v : mesh.tet(t))
+      if (v != a) {
+        sum += (mesh.point(v) - mesh.point(a)).norm();
+        ++edges;
+      }
+  if (!((mesh.point(b) - mesh.point(a)).norm() < kShortEdge * sum / edges)) return false;
+  std::vector<Tet> fresh;
+  double q = std::numeric_limits<double>::max();
+  for (const Index t : star) {
+    Tet n = mesh.tet(t);
+    if (std::find(n.begin(), n.end(), b) != n.end()) continue;
+    std::replace(n.begin(), n.end(), a, b);
+    q = std::min(q, quality(mesh, n[0], n[1], n[2], n[3]));
+    fresh.push_back(n);
+  }
+  if (fresh.size() == star.size()) return false;  // b is no neighbour
+  if (!(q > min_quality(mesh, star) + kMinGain)) return false;
+  if (!all_positive(mesh, fresh)) return false;
+  mesh.replace(star, fresh);
   return true;
 }
 

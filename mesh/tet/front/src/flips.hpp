@@ -17,4 +17,11 @@ int remove_edge(LiveMesh& mesh, Index a, Index b);
 // around the edge joining their apexes.
 bool flip_2_3(LiveMesh& mesh, Index t, int face);
 
+// Edge collapse: the movable node a merges into its neighbour b; the tets holding both go, the
+// rest of a's star is joined to b instead. Every new tet positive makes them fill a's star
+// exactly (a is interior: every boundary face is kept, so has no movable corner), and the
+// chain of their boundary faces is the star's, so kept faces stay faces. a is left with no
+// tets (LiveMesh::compact drops it).
+bool collapse_edge(LiveMesh& mesh, Index a, Index b);
+
 }  // namespace volmesh::tet::front

@@ -63,6 +63,19 @@ bool flip_around(LiveMesh& mesh, Index t, ImproveStats& s) {
       ++s.flips_2_3;
       return true;
     }
+  // The shortest edges first: a poor tet around a short edge is one a collapse removes.
+  std::array<int, 6> order{0, 1, 2, 3, 4, 5};
+  const auto length = [&](int e) {
+    return (mesh.point(corners[kEdges[e][0]]) - mesh.point(corners[kEdges[e][1]])).squaredNorm();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return length(x) < length(y); });
+  for (const int e : order) {
+    const Index a = corners[kEdges[e][0]], b = corners[kEdges[e][1]];
+    if (collapse_edge(mesh, a, b) || collapse_edge(mesh, b, a)) {
+      ++s.collapses;
+      return true;
+    }
+  }
   return false;
 }
 

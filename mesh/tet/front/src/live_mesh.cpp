@@ -108,6 +108,26 @@ void LiveMesh::compact() {
   }
   m_.cells.resize(out);
   m_.cell_region.resize(out);
+  // Nodes left with no tets (collapsed) go; the others keep their order.
+  std::vector<Index> renumber(m_.points.size(), kNoIndex);
+  Index kept_points = 0;
+  for (Index v = 0; v < static_cast<Index>(m_.points.size()); ++v) {
+    if (incident_[v].empty()) continue;
+    renumber[v] = kept_points;
+    m_.points[kept_points] = m_.points[v];
+    pinned_[kept_points] = pinned_[v];
+    ++kept_points;
+  }
+  m_.points.resize(kept_points);
+  pinned_.resize(kept_points);
+  incident_.resize(kept_points);
+  for (Tet& c : m_.cells)
+    for (Index& v : c) v = renumber[v];
+  for (auto& f : m_.boundary_faces)
+    for (Index& v : f) v = renumber[v];
+  std::set<std::array<Index, 3>> faces;
+  for (const auto& f : kept_) faces.insert(sorted(renumber[f[0]], renumber[f[1]], renumber[f[2]]));
+  kept_ = std::move(faces);
   alive_.assign(out, 1);
   quality_.resize(out);
   for (Index t = 0; t < out; ++t) quality_[t] = quality_of(m_.points, m_.cells[t]);

@@ -39,7 +39,8 @@ class LiveMesh {
   // Moves a movable node (its star stays positive: the caller checks).
   void move(Index v, const Vec3& p);
 
-  // Drops the slots of removed tets, keeping the others' order.
+  // Drops the slots of removed tets and the nodes left with no tet, keeping the others'
+  // order (the mesh's boundary faces renumbered too).
   void compact();
 
  private:

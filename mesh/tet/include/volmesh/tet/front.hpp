@@ -46,6 +46,7 @@ struct ImproveStats {
   long long passes = 0;
   long long flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, edge_removals = 0;
   long long nodes_moved = 0;  // node moves (a node may move in several passes)
+  long long collapses = 0;    // interior nodes merged into a neighbour (edge collapse)
   double min_dihedral_before = 0.0, min_dihedral_after = 0.0;  // degrees
   double radius_edge_before = 0.0, radius_edge_after = 0.0;    // max radius-edge ratio
   double seconds = 0.0;
