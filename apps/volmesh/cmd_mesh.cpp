@@ -150,10 +150,10 @@ Command add_mesh_command(CLI::App& root) {
   CLI::Option* level = app->add_option("--level", opt->level,
                   "octree depth at boundaries and interfaces (grid: 2^level cells per axis)")
       ->capture_default_str();
+  // The meshers by size check it themselves, naming the domain and the limits they take.
   if (any_mesher_by_size())
     app->add_option_function<double>(
-           "--size", [opt](const double& h) { opt->size = h; }, "target edge length")
-        ->check(CLI::PositiveNumber);
+        "--size", [opt](const double& h) { opt->size = h; }, "target edge length");
   add_mesher_options(*app, opt->given, true);
   app->add_option("--decompose", opt->decompose,
                   "write every cell as conforming tetrahedra (for .msh .mesh .inp, which take "

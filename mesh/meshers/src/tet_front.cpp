@@ -67,8 +67,13 @@ nlohmann::json remesh(std::vector<tet::ProjectionSurface>& surfaces, double h) {
 MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   auto clock = Clock::now();
   const double size = request.size.value_or(0.0);
-  if (!(size > 0.0) || !std::isfinite(size))
-    throw InputError(kMethod + ": --size " + std::to_string(size) + " must be positive and finite");
+  tet::FrontOptions options{.size = size};
+  if (const auto n = given<std::int64_t>(request.options, "aux-ratio"))
+    options.aux_ratio = static_cast<int>(*n);
+  if (const auto k = given<std::int64_t>(request.options, "stop-after")) options.stop_after = *k;
+  // Before the boundary is triangulated at h: the domain's box holds the boundary's.
+  const Box3 box = domain.bounds();
+  tet::require_front_size(request.domain_name, size, options.aux_ratio, box.lo, box.hi);
   report(request.progress, "triangulating the boundary", 0.0);
   BoundarySurfaces boundary = triangulated_surfaces(domain, request.domain_name, kMethod, size);
   std::vector<tet::ProjectionSurface>& surfaces = boundary.surfaces;
@@ -88,10 +93,6 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   boundary_json["surfaces"] = surfaces.size();
   boundary_json["triangles"] = triangles;
   const double check_seconds = seconds_since(clock);
-  tet::FrontOptions options{.size = size};
-  if (const auto n = given<std::int64_t>(request.options, "aux-ratio"))
-    options.aux_ratio = static_cast<int>(*n);
-  if (const auto k = given<std::int64_t>(request.options, "stop-after")) options.stop_after = *k;
   tet::FrontResult front =
       tet::tetrahedralize_by_front(surfaces, options, part_of(request.progress, 0.05, 1.0));
   drop_cavities(front.mesh, surfaces);

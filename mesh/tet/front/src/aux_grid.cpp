@@ -11,6 +11,13 @@ namespace {
 // The grid's offset from the box corner, in steps: generic, so that grid points and lines
 // miss the faces and edges of axis-aligned and symmetric models.
 const Vec3 kOffset(0.3183098861837907, 0.2718281828459045, 0.1414213562373095);
+// The grid's origin for the box corner lo, and its points along an axis of extent [lo, hi]:
+// a step and the offset below lo, and two steps beyond hi.
+Vec3 grid_origin(const Vec3& lo, double step) { return lo - step * (Vec3::Ones() + kOffset); }
+double points_along(double origin, double hi, double step) {
+  return std::ceil((hi - origin) / step) + 2.0;
+}
+
 // Barycentric margin telling "strictly inside" from "on a face" for points computed in doubles.
 constexpr double kMargin = 1e-9;
 
@@ -65,6 +72,13 @@ void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
 
 }  // namespace
 
+double aux_grid_points(const Vec3& lo, const Vec3& hi, double step) {
+  const Vec3 origin = grid_origin(lo, step);
+  double count = 1.0;
+  for (int a = 0; a < 3; ++a) count *= points_along(origin[a], hi[a], step);
+  return count;
+}
+
 AuxGrid make_aux_grid(const std::vector<Vec3>& points,
                       const std::vector<std::array<Index, 3>>& triangles, double step) {
   AuxGrid g;
@@ -75,9 +89,9 @@ AuxGrid make_aux_grid(const std::vector<Vec3>& points,
       hi = hi.cwiseMax(points[v]);
     }
   g.step = step;
-  g.origin = lo - step * (Vec3::Ones() + kOffset);
+  g.origin = grid_origin(lo, step);
   for (int a = 0; a < 3; ++a)
-    g.n[a] = static_cast<long long>(std::ceil((hi[a] - g.origin[a]) / step)) + 2;
+    g.n[a] = static_cast<long long>(points_along(g.origin[a], hi[a], step));
   const long long total = g.n[0] * g.n[1] * g.n[2];
   g.bits.assign(static_cast<std::size_t>((total + 63) / 64), 0);
   // Crossings of the x-lines (j, k) with the triangles, as (line, x).

@@ -11,6 +11,12 @@
 
 namespace volmesh::tet::front {
 
+// The grid's bits take at most this much memory: a sixth of the 24 GiB the project's machines
+// have, so that the mesh, the fallback and the checks beside it still fit.
+inline constexpr double kMaxAuxBytes = 4.0 * 1024 * 1024 * 1024;
+// So at most this many auxiliary points (one bit each).
+inline constexpr double kMaxAuxPoints = 8.0 * kMaxAuxBytes;
+
 struct AuxGrid {
   Vec3 origin = Vec3::Zero();
   double step = 0.0;
@@ -24,6 +30,10 @@ struct AuxGrid {
     return origin + step * Vec3(double(i), double(j), double(k));
   }
 };
+
+// The points of the grid make_aux_grid lays over the box [lo, hi] at `step` (as a double: it
+// may exceed any integer for an absurd step).
+double aux_grid_points(const Vec3& lo, const Vec3& hi, double step);
 
 // The grid of `step` over the box of the region's boundary triangles (outer surfaces facing
 // in or out, holes alike), its points alive where a ray along x crosses the triangles an odd

@@ -2,9 +2,12 @@
 // directly in it), then the stalled cavities closed (fallback.hpp).
 #include "volmesh/tet/front.hpp"
 
+#include <cmath>
+#include <sstream>
 #include <string>
 
 #include "advance.hpp"
+#include "aux_grid.hpp"
 #include "fallback.hpp"
 #include "improve.hpp"
 #include "nesting.hpp"
@@ -17,15 +20,49 @@ namespace {
 
 using Tri = std::array<Index, 3>;
 
-// More auxiliary points than this (a gigabit) is an absurd h for the domain.
-constexpr double kMaxAuxPoints = 1e9;
+// Bisection steps for the smallest size allowed: a relative precision of 2^-40.
+constexpr int kBisections = 40;
+// Significant digits of the sizes and counts in the messages.
+constexpr int kDigits = 4;
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+
+std::string text(double x) {
+  std::ostringstream out;
+  out.precision(kDigits);
+  out << x;
+  return out.str();
+}
 
 }  // namespace
 
+void require_front_size(const std::string& name, double h, int aux_ratio, const Vec3& lo,
+                        const Vec3& hi) {
+  const std::string head = "tet-front: " + name + ": --size " + text(h);
+  if (!(h > 0.0) || !std::isfinite(h)) throw InputError(head + " is not a positive, finite length");
+  const double diagonal = (hi - lo).norm();
+  if (h > diagonal)
+    throw InputError(head + " is absurd: longer than the boundary's bounding-box diagonal, " +
+                     text(diagonal) + ", the largest size allowed");
+  const auto points = [&](double size) { return front::aux_grid_points(lo, hi, size / aux_ratio); };
+  if (points(h) <= front::kMaxAuxPoints) return;
+  // The smallest size whose grid fits: the count falls as the size grows, and the diagonal fits.
+  double small = h, large = std::max(h, diagonal);
+  for (int i = 0; i < kBisections; ++i) {
+    const double mid = std::sqrt(small * large);
+    (points(mid) <= front::kMaxAuxPoints ? large : small) = mid;
+  }
+  // Rounded up, so that the size printed is allowed.
+  const double unit = std::pow(10.0, std::floor(std::log10(large)) - (kDigits - 1));
+  throw InputError(head + " is too small: it needs " + text(points(h)) +
+                   " auxiliary points at --aux-ratio " + std::to_string(aux_ratio) +
+                   ", more than the " + text(front::kMaxAuxPoints) +
+                   " that fit in " + text(front::kMaxAuxBytes / kGiB) +
+                   " GiB; the smallest size allowed is " +
+                   text(std::ceil(large / unit) * unit));
+}
+
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress) {
-  if (!(options.size > 0.0))
-    throw InputError("tet-front: --size " + std::to_string(options.size) + " must be positive");
   FrontResult r;
   TetMesh& m = r.mesh;
   std::vector<std::vector<Tri>> outward;
@@ -36,19 +73,15 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     for (const Tri& t : s.surface.triangles) tris.push_back({first + t[0], first + t[1], first + t[2]});
     outward.push_back(std::move(tris));
   }
-  for (std::size_t s = 0; s < surfaces.size(); ++s) {
-    Vec3 lo = m.points[outward[s].front()[0]], hi = lo;
-    for (const Tri& t : outward[s])
-      for (const Index v : t) {
-        lo = lo.cwiseMin(m.points[v]);
-        hi = hi.cwiseMax(m.points[v]);
-      }
-    const double step = options.size / options.aux_ratio;
-    const Vec3 cells = (hi - lo) / step;
-    if ((cells.x() + 3) * (cells.y() + 3) * (cells.z() + 3) > kMaxAuxPoints)
-      throw InputError("tet-front: --size " + std::to_string(options.size) + " is too small for " +
-                       surfaces[s].name + " (more than 1e9 auxiliary points at --aux-ratio " +
-                       std::to_string(options.aux_ratio) + ")");
+  // Each region's auxiliary grid lies in the box of all the surfaces, one grid at a time.
+  if (!m.points.empty()) {
+    Vec3 lo = m.points.front(), hi = lo;
+    for (const Vec3& p : m.points) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    require_front_size(surfaces.size() == 1 ? surfaces.front().name : "its surfaces",
+                       options.size, options.aux_ratio, lo, hi);
   }
   const std::vector<Index> parent = front::parents(m.points, outward);
   double front_seconds = 0.0, fallback_seconds = 0.0;

@@ -85,8 +85,14 @@ struct FrontResult {
   FrontStats stats;
 };
 
-// Throws InputError when h is not positive or too small for the domain (more than
-// kMaxAuxPoints auxiliary points), or when rounding to doubles inverts every projection of a
+// Refuses (InputError "tet-front: <name>: --size <h> ...", naming the limit) a size h that is
+// not a positive finite length, exceeds the diagonal of the boundary's box [lo, hi] (it could
+// not mesh anything finer than that box), or is too small: its auxiliary grid at h / aux_ratio
+// would not fit in the memory set aside for it (the message gives the smallest size allowed).
+void require_front_size(const std::string& name, double h, int aux_ratio, const Vec3& lo,
+                        const Vec3& hi);
+
+// Throws InputError when require_front_size refuses h for a surface, or when rounding to doubles inverts every projection of a
 // stalled cavity.
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress = {});
