@@ -172,6 +172,24 @@ TEST(Projection, PapersWorstCaseCone) {
   EXPECT_GT(m.stats.prisms, 16 * 16 / 8);
 }
 
+// The plane triangulation's faces and vertices live wherever the heap puts them, and its flips
+// follow their addresses; the tets must not: the same input gives the same tets whatever the
+// heap held before.
+TEST(Projection, SameTetsWhateverTheHeapHolds) {
+  const std::vector<ProjectionSurface> surfaces{{sphere(3)}, {cone(24)}};
+  std::vector<ProjectionMesh> meshes;
+  std::vector<std::vector<char>> clutter;
+  for (int run = 0; run < 3; ++run) {
+    for (int k = 0; k < 1000 * run; ++k) clutter.emplace_back(std::size_t(16 + (k * 37) % 200));
+    meshes.push_back(tetrahedralize_by_projection({surfaces[0]}, {}));
+    meshes.push_back(tetrahedralize_by_projection({surfaces[1]}, {}));
+  }
+  for (std::size_t m = 2; m < meshes.size(); ++m) {
+    EXPECT_EQ(meshes[m].tets, meshes[m % 2].tets);
+    EXPECT_EQ(meshes[m].boundary_faces, meshes[m % 2].boundary_faces);
+  }
+}
+
 TEST(Projection, SphereHasNoWalls) {
   const ProjectionMesh m = mesh_of({{sphere(2)}});
   EXPECT_EQ(m.stats.triangles, 128);

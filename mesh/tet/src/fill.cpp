@@ -4,6 +4,10 @@
 // construction; the rounding re-tests each one (rounding.hpp), and the tests check them
 // exactly.
 
+#include <algorithm>
+#include <tuple>
+#include <vector>
+
 #include "projection_data.hpp"
 
 namespace volmesh::tet::detail {
@@ -25,7 +29,17 @@ void fill(State& state, ProjectionMesh& mesh) {
     o.z /= 6;
     const Index centre = static_cast<Index>(state.points.size());
     state.points.push_back(std::move(o));
-    for (const BoundaryTriangle& t : caps) {
+    // The stitching meets a prism's triangles in an order that follows the plane
+    // triangulation's history, not its result: they are numbered canonically (each from its
+    // least corner, then in order), so that the same input gives the same tets.
+    std::vector<BoundaryTriangle> sides = caps;
+    for (BoundaryTriangle& t : sides)
+      std::rotate(t.points.begin(), std::min_element(t.points.begin(), t.points.end()),
+                  t.points.end());
+    std::sort(sides.begin(), sides.end(), [](const BoundaryTriangle& x, const BoundaryTriangle& y) {
+      return std::tie(x.points, x.on) < std::tie(y.points, y.on);
+    });
+    for (const BoundaryTriangle& t : sides) {
       const auto& [a, b, c] = t.points;
       mesh.tets.push_back({a, c, b, centre});
       mesh.tet_region.push_back(prism.region);
