@@ -87,6 +87,9 @@ TEST(CliTetFront, BadInputExits1WithOneLineAndNoOutput) {
                       "smallest size allowed is 0.001848"},
       {"mesh tet-front " + (dir / "crossing.off").string() + " --size 0.5", "triangles"},
       {"mesh tet-front " + (dir / "open.off").string() + " --size 0.5", "open.off"},
+      // A clean input that remeshing at this size folds: the remeshed surface is named.
+      {"mesh tet-front " VOLMESH_CGAL_DATA "/meshes/femur.off --size 0.04 --remesh-surface",
+       "the boundary of femur.off remeshed at --size 0.04: triangles"},
   };
   test::expect_refusals(cases, out, dir);
 }
