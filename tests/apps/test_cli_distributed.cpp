@@ -25,6 +25,8 @@ using test::run_volmesh;
 // The relative tolerance of the solves (LinearSolverOptions::tolerance 1e-10) leaves the
 // solutions of two solvers this close, relative to the solution's size.
 constexpr double kSolutionAgreement = 1e-7;
+// CG + BoomerAMG's iteration counts over refinement stay within this fraction of their mean.
+constexpr double kFlatIterations = 0.2;
 
 bool petsc_built(const fs::path& dir) {
   return run_volmesh("--version", dir).out.find("PETSc") != std::string::npos;
@@ -161,7 +163,7 @@ TEST_F(CliDistributed, IterationsStayFlatUnderRefinement) {
   const fs::path dir = test::scratch_dir("distributed-iterations");
   if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
   std::vector<int> iterations;
-  for (int level : {3, 4, 5}) {
+  for (int level : {4, 5, 6}) {
     const auto r = run_volmesh("solve poisson --problem sine --method cutcell --domain "
                                "builtin:ball --solver petsc --json --level " +
                                    std::to_string(level) + " -o " + (dir / "u.vtu").string(),
@@ -169,7 +171,11 @@ TEST_F(CliDistributed, IterationsStayFlatUnderRefinement) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     iterations.push_back(nlohmann::json::parse(r.out)["iterations"]);
   }
-  EXPECT_LE(iterations.back(), iterations.front() + 4) << iterations[0] << " " << iterations[2];
+  // Flat: every level within 20% of the levels' mean (V-cycles with Gauss-Seidel take 6, 8, 9).
+  const double mean = (iterations[0] + iterations[1] + iterations[2]) / 3.0;
+  for (int n : iterations)
+    EXPECT_LE(std::abs(n - mean), kFlatIterations * mean)
+        << iterations[0] << " " << iterations[1] << " " << iterations[2];
 }
 
 TEST_F(CliDistributed, StudySlopeIsTheSameOnTwoRanks) {

@@ -1,8 +1,8 @@
 /* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
  * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
  * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (PMIS,
- * ext+i, P_max 4, strong threshold 0.25; -pc_hypre_* options given override them), relative
- * residual 1e-8. Prints one JSON line:
+ * ext+i, P_max 4, strong threshold 0.25, W-cycles, Chebyshev smoothing; -pc_hypre_* options
+ * given override them), relative residual 1e-8. Prints one JSON line:
  * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
  * Usage: poisson7 -n N [PETSc options]. */
 #include <petscdmda.h>
@@ -69,7 +69,9 @@ int main(int argc, char** argv) {
   const char* defaults[][2] = {{"-pc_hypre_boomeramg_coarsen_type", "PMIS"},
                                {"-pc_hypre_boomeramg_interp_type", "ext+i"},
                                {"-pc_hypre_boomeramg_P_max", "4"},
-                               {"-pc_hypre_boomeramg_strong_threshold", "0.25"}};
+                               {"-pc_hypre_boomeramg_strong_threshold", "0.25"},
+                               {"-pc_hypre_boomeramg_cycle_type", "W"},
+                               {"-pc_hypre_boomeramg_relax_type_all", "Chebyshev"}};
   for (size_t i = 0; i < sizeof defaults / sizeof defaults[0]; ++i) {
     PetscBool given;
     PetscCall(PetscOptionsHasName(NULL, NULL, defaults[i][0], &given));
