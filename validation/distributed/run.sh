@@ -6,10 +6,11 @@
 #   2. the iteration counts over four refinement levels, beside the anchor's at the same sizes;
 #   3. the anchor: PETSc/hypre on a 7-point Poisson problem with as many unknowns
 #      (poisson7.c) on 1 and 2 ranks, with our BoomerAMG defaults and with the 7-point
-#      stencil's classical tuning; ours is compared with the faster of the two.
-# DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶) and LEVELS ("4 5 6 7")
-# choose the case. Prints the report and writes it to $OUT/report.md (OUT=dir, default
-# build/validation-distributed).
+#      stencil's classical tuning; ours is compared with the faster of the two;
+#   4. elasticity on one rank: hypre nodal with our defaults and two variants, and GAMG.
+# DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶), LEVELS ("4 5 6 7")
+# and ELASTICITY_LEVEL (6, ~2.8·10⁵ unknowns) choose the cases. Prints the report and writes
+# it to $OUT/report.md (OUT=dir, default build/validation-distributed).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
@@ -18,6 +19,7 @@ OUT=${OUT:-$ROOT/build/validation-distributed}
 DOMAIN=${DOMAIN:-builtin:ball}
 LEVEL=${LEVEL:-7}
 LEVELS=${LEVELS:-"4 5 6 7"}
+ELASTICITY_LEVEL=${ELASTICITY_LEVEL:-6}
 VOLMESH=$BUILD/apps/volmesh/volmesh
 # mpirun refuses root unless told; -q keeps its banners out of the output.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -40,6 +42,16 @@ for level in $LEVELS; do
   $MPIRUN -np 1 "$VOLMESH" $CASE --level "$level" -o "$OUT/level$level.vtu" --json --quiet \
     -ksp_rtol 1e-8 > "$OUT/level$level.json"
 done
+# Elasticity, one rank: the default (hypre nodal, Chebyshev), hybrid Gauss-Seidel, the
+# interpolation fitted to the rigid-body modes, and GAMG with the rigid-body near-null space.
+ELASTICITY="solve elasticity --problem lame --method cutcell --domain builtin:thick-sphere"
+ELASTICITY_SETTINGS=("" "-pc_hypre_boomeramg_relax_type_all symmetric-SOR/Jacobi"
+  "-pc_hypre_boomeramg_vec_interp_variant 3" "-pc_type gamg")
+for i in "${!ELASTICITY_SETTINGS[@]}"; do
+  # shellcheck disable=SC2086  # each setting is a list of options
+  $MPIRUN -np 1 "$VOLMESH" $ELASTICITY --level "$ELASTICITY_LEVEL" -o "$OUT/elasticity.vtu" \
+    --json --quiet -ksp_rtol 1e-8 ${ELASTICITY_SETTINGS[$i]} > "$OUT/elasticity$i.json"
+done
 cube_side() { python3 -c "import json; print(round(json.load(open('$1'))['unknowns'] ** (1/3)))"; }
 N=$(cube_side "$OUT/solve1.json")
 for level in $LEVELS; do  # the anchor's own iterations at the levels' sizes
@@ -57,9 +69,9 @@ for np in 1 2; do
   $MPIRUN -np $np "$OUT/poisson7" -n "$N" $TUNED > "$OUT/anchor-tuned$np.json"
 done
 
-python3 - "$OUT" "$LEVEL" "$LEVELS" <<'PY' | tee "$OUT/report.md"
+python3 - "$OUT" "$LEVEL" "$LEVELS" "$ELASTICITY_LEVEL" <<'PY' | tee "$OUT/report.md"
 import json, sys
-out, level, levels = sys.argv[1], sys.argv[2], sys.argv[3].split()
+out, level, levels, elasticity_level = sys.argv[1], sys.argv[2], sys.argv[3].split(), sys.argv[4]
 load = lambda name: json.load(open(f"{out}/{name}.json"))
 runs = {np: load(f"solve{np}") for np in (1, 2)}
 anchor = {np: load(f"anchor{np}") for np in (1, 2)}
@@ -109,4 +121,15 @@ for np in (1, 2):
           f"{runs[np]['seconds']['solve'] / best[np]['solve']:.2f} |")
 print(f"\n2-rank efficiency of preconditioner + solve: ours {solver(runs[1]) / (2 * solver(runs[2])):.2f}, "
       f"the faster anchor's {cost(best[1]) / (2 * cost(best[2])):.2f}")
+e0 = load("elasticity0")
+print(f"\n## Elasticity: lame on builtin:thick-sphere, level {elasticity_level}, {e0['unknowns']} unknowns, "
+      "1 rank, to 1e-8\n")
+print("| preconditioner | method | iterations | preconditioner s | solve s |")
+print("|---|---|---|---|---|")
+names = ["hypre nodal, Chebyshev (default)", "hypre nodal, hybrid Gauss-Seidel",
+         "hypre nodal, rigid-body interpolation (vec_interp_variant 3)", "GAMG, rigid-body near-null space"]
+for i, name in enumerate(names):
+    e = load(f"elasticity{i}")
+    print(f"| {name} | {e['linear_solver']} | {e['iterations']} | {e['seconds']['preconditioner']:.2f} | "
+          f"{e['seconds']['solve']:.2f} |")
 PY
