@@ -77,7 +77,7 @@ class Defaults {
 // level), and Chebyshev smoothing, matrix-vector products only, makes each cycle cheaper than
 // hybrid Gauss-Seidel on these dense rows. Elasticity: HMIS with 0.5 on the nodal (block
 // size 3) system, nodes coarsened together, Chebyshev smoothing; interpolation fitted to the
-// rigid-body modes (vec_interp_variant) multiplies the set-up time by ten on cut-cell meshes
+// rigid-body modes (vec_interp_variant) multiplies the set-up time by nine on cut-cell meshes
 // for the same iterations, so it is left to the command line, and with it the smoothing stays
 // hypre's own (hypre 2.26's set-up does not return with both).
 void set_defaults(Defaults& d, int block_size) {

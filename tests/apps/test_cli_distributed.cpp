@@ -158,7 +158,7 @@ TEST_F(CliDistributed, RanksReadAPartitionedMeshAndMatchSerial) {
 }
 
 // PETSc's own options reach the solver over the defaults: the rigid-body interpolation for
-// elasticity (whose set-up never returns with the default Chebyshev smoothing in hypre 2.26)
+// elasticity (whose set-up does not return with the default Chebyshev smoothing in hypre 2.26)
 // and GAMG, each to the Eigen solve's solution.
 TEST_F(CliDistributed, ElasticityOptionsOverTheDefaultsMatchEigen) {
   const fs::path dir = test::scratch_dir("distributed-elasticity-options");
@@ -180,7 +180,7 @@ TEST_F(CliDistributed, ElasticityOptionsOverTheDefaultsMatchEigen) {
 }
 
 // BoomerAMG's iterations stay about flat where incomplete Cholesky's double with each level
-// (levels 3-5 here: 8 times the unknowns per level).
+// (levels 4-6 here: 8 times the unknowns per level).
 TEST_F(CliDistributed, IterationsStayFlatUnderRefinement) {
   const fs::path dir = test::scratch_dir("distributed-iterations");
   if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
