@@ -1,8 +1,9 @@
 /* The anchor of the distributed study: PETSc/hypre on the plainest problem of the same size,
  * -Δu = 1 on the unit cube, u = 0 on its boundary, the 7-point stencil on an n³ grid of
- * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's defaults (PMIS,
- * ext+i, P_max 4, strong threshold 0.25, W-cycles, Chebyshev smoothing; -pc_hypre_* options
- * given override them), relative residual 1e-8. Prints one JSON line:
+ * interior unknowns (DMDA, one box per rank), CG + BoomerAMG with volmesh's scalar defaults
+ * (set_defaults in fem/src/petsc_solve.cpp: PMIS, ext+i, P_max 4, strong threshold 0.25,
+ * W-cycles, Chebyshev smoothing; -pc_hypre_* options given override them), relative residual
+ * 1e-8. Prints one JSON line:
  * unknowns, ranks, iterations and the assembly, preconditioner and solve seconds.
  * Usage: poisson7 -n N [PETSc options]. */
 #include <petscdmda.h>

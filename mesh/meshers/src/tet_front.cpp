@@ -79,25 +79,25 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   BoundarySurfaces boundary = triangulated_surfaces(domain, request.domain_name, kMethod, size);
   std::vector<tet::ProjectionSurface>& surfaces = boundary.surfaces;
   const double surface_seconds = seconds_since(clock);
-  clock = Clock::now();
+  double check_seconds = 0.0;
+  const auto check = [&](const std::string& name) {
+    const auto start = Clock::now();
+    require_no_intersections(surfaces, name, kMethod);
+    check_seconds += seconds_since(start);
+  };
   report(request.progress, "checking the surfaces", 0.0);
-  require_no_intersections(surfaces, request.domain_name, kMethod);
-  double check_seconds = seconds_since(clock);
-  clock = Clock::now();
+  check(request.domain_name);
   nlohmann::json boundary_json = {{"triangulated", boundary.triangulated}};
-  const bool remeshing = given<bool>(request.options, "remesh-surface").value_or(false);
-  if (remeshing) {
+  double remesh_seconds = 0.0;
+  if (given<bool>(request.options, "remesh-surface").value_or(false)) {
     report(request.progress, "remeshing the boundary", 0.0);
-    boundary_json["remeshed"] = remesh(surfaces, size);
-  }
-  const double remesh_seconds = seconds_since(clock);
-  if (remeshing) {
-    // Remeshing can fold a thin part of a clean input: said of the remeshed surface.
     clock = Clock::now();
+    boundary_json["remeshed"] = remesh(surfaces, size);
+    remesh_seconds = seconds_since(clock);
+    // Remeshing can fold a thin part of a clean input: said of the remeshed surface.
     std::ostringstream name;
     name << "the boundary of " << request.domain_name << " remeshed at --size " << size;
-    require_no_intersections(surfaces, name.str(), kMethod);
-    check_seconds += seconds_since(clock);
+    check(name.str());
   }
   long long triangles = 0;
   for (const tet::ProjectionSurface& p : surfaces) triangles += p.surface.num_triangles();

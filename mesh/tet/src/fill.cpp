@@ -32,14 +32,15 @@ void fill(State& state, ProjectionMesh& mesh) {
     // The stitching meets a prism's triangles in an order that follows the plane
     // triangulation's history, not its result: they are numbered canonically (each from its
     // least corner, then in order), so that the same input gives the same tets.
-    std::vector<BoundaryTriangle> sides = caps;
-    for (BoundaryTriangle& t : sides)
+    std::vector<BoundaryTriangle> ordered = caps;  // the caps stay first for the stats
+    for (BoundaryTriangle& t : ordered)
       std::rotate(t.points.begin(), std::min_element(t.points.begin(), t.points.end()),
                   t.points.end());
-    std::sort(sides.begin(), sides.end(), [](const BoundaryTriangle& x, const BoundaryTriangle& y) {
-      return std::tie(x.points, x.on) < std::tie(y.points, y.on);
-    });
-    for (const BoundaryTriangle& t : sides) {
+    std::sort(ordered.begin(), ordered.end(),
+              [](const BoundaryTriangle& x, const BoundaryTriangle& y) {
+                return std::tie(x.points, x.on) < std::tie(y.points, y.on);
+              });
+    for (const BoundaryTriangle& t : ordered) {
       const auto& [a, b, c] = t.points;
       mesh.tets.push_back({a, c, b, centre});
       mesh.tet_region.push_back(prism.region);
