@@ -12,10 +12,6 @@
 namespace volmesh {
 namespace {
 
-// The twelve edges in VTK corners: bottom loop, top loop, verticals.
-constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
-                                                        {4, 5}, {5, 6}, {6, 7}, {7, 4},
-                                                        {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 constexpr double kRightAngleDeg = 90.0;
 constexpr double kFullTurnDeg = 360.0;
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;

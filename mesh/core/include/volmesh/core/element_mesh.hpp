@@ -36,4 +36,13 @@ inline constexpr std::array<std::array<int, 3>, 4> kTetFaces{
 inline constexpr std::array<std::array<int, 4>, 6> kHexFaces{
     {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
 
+// Edges of the reference cells in local corner numbers, in VTK's order (the order of the
+// mid-edge nodes of its quadratic cells): tet 01 12 02 03 13 23; hex bottom loop, top loop,
+// verticals.
+inline constexpr std::array<std::array<int, 2>, 6> kTetEdges{
+    {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}}};
+inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                               {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                               {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
 }  // namespace volmesh
