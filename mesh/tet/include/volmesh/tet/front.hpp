@@ -96,8 +96,9 @@ struct FrontResult {
 void require_front_size(const std::string& name, double h, int aux_ratio, const Vec3& lo,
                         const Vec3& hi);
 
-// Throws InputError when require_front_size refuses h for a surface, or when rounding to doubles inverts every projection of a
-// stalled cavity.
+// Throws InputError when require_front_size refuses h for a surface, or when no projection
+// direction closes a stalled cavity with tets that stay positive (rounded to doubles, and the
+// cones of the tets refined around its cut faces).
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress = {});
 
