@@ -80,7 +80,7 @@ Each subcommand's --help has its own examples.)");
     std::cerr << "volmesh: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    // A distributed run's ranks fail together (fem::agree); rank 0 speaks for them.
+    // An error the ranks agreed on (fem::agree) is thrown on every rank; rank 0 speaks for them.
     if (fem::rank() == 0) std::cerr << "volmesh: error: " << e.what() << "\n";
     return 1;
   }

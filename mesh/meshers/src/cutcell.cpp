@@ -54,7 +54,7 @@ MeshResult mesh_cutcell(const Domain& domain, const MeshRequest& request) {
 const Registration registered{MesherInfo{
     .name = "cutcell",
     .description = "octree cut cells (MMCMS): polyhedra that follow boundaries and "
-                   "interfaces, second order",
+                   "interfaces, second order where they are smooth",
     .resolution = Resolution::level,
     .octree = true,
     .options = {{.name = "interface-points",

@@ -151,8 +151,8 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
 
 const Registration registered{MesherInfo{
     .name = kMethod,
-    .description = "quality tetrahedra of size h by advancing front, boundary triangles kept "
-                   "(stalls closed by projection: never fails)",
+    .description = "tetrahedra of size h by advancing front, boundary triangles kept (stalls "
+                   "closed by projection, else refused)",
     .resolution = Resolution::size,
     .octree = false,
     .options = {{.name = "aux-ratio",

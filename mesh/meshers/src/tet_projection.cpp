@@ -108,7 +108,8 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
 
 const Registration registered{MesherInfo{
     .name = kMethod,
-    .description = "tetrahedra filling triangulated surfaces by projection, exact (never fails)",
+    .description = "tetrahedra filling triangulated surfaces by projection, exact (refused "
+                   "where rounding to doubles flattens a tet)",
     .resolution = Resolution::surface,
     .octree = false,
     .options = {{.name = "axis",

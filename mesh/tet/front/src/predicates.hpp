@@ -1,6 +1,6 @@
 #pragma once
-// The exact tests behind the front's rejections (CGAL's exact predicates on the doubles):
-// every decision whose wrong sign would make the mesh invalid.
+// The front's rejection tests: CGAL's exact predicates on the doubles for every decision whose
+// wrong sign would make the mesh invalid, but for one conservative tolerance (kNearlyFlat).
 #include <array>
 
 #include "volmesh/core/types.hpp"

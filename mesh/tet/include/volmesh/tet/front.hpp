@@ -1,7 +1,7 @@
 #pragma once
-// Quality tetrahedra by advancing front with an auxiliary point array (docs/methods.md,
+// Tetrahedra of size h by advancing front with an auxiliary point array (docs/methods.md,
 // "tet-front"): fills closed, outward, non-self-intersecting triangulated surfaces with tets
-// of target edge h, keeping the surface triangles exactly.
+// of target edge h, keeping the surface triangles (a fallback cut may split one: counted).
 //
 // Each region (the inside of its surfaces, outside the ones nested in it) is meshed on its own:
 //  - auxiliary points on a grid of step h/n, one bit each, alive inside the region;
@@ -12,13 +12,14 @@
 //    else a new node at the face's barycentre + H along its normal, H = min(3 Vmax / S, √S)
 //    shrunk by 0.75 until it fits, in a ball of radius 2h/n free of deleted points;
 //  - a tet is refused if it holds a deleted auxiliary point strictly inside, a front node, is
-//    crossed by a front edge or crosses a front face (exact predicates), is not positive, or
-//    exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
+//    crossed by a front edge or crosses a front face (exact predicates, but a front edge at a
+//    shared corner within a sine of 1e-6 of a face's plane counts as in it), is not positive,
+//    or exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
 //    corner) is kept; the auxiliary points it covers are deleted and the front updated.
-// When no face of the front can advance (a stall), the rest of the region is closed: one tet,
-// a fan from a point that sees the whole cavity, or the projection mesher's tets
-// (projection.hpp), merged in even where they cut the cavity's faces, by refining the tets
-// outside to match; the stats say how often and how much.
+// When no face of the front can advance (a stall), the rest of the region is closed (counted in
+// the stats): one tet, a fan from a point that sees the whole cavity, or the projection mesher's
+// tets, merged even where they cut the cavity's faces by refining the tets outside to match;
+// with no projection direction whose tets all stay positive, InputError names the cavity.
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,8 +93,7 @@ struct FrontResult {
 void require_front_size(const std::string& name, double h, int aux_ratio, const Vec3& lo,
                         const Vec3& hi);
 
-// Throws InputError when require_front_size refuses h for a surface, or when rounding to doubles inverts every projection of a
-// stalled cavity.
+// Throws InputError as require_front_size does, or when no direction closes a stalled cavity.
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress = {});
 

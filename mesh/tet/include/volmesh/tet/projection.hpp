@@ -1,7 +1,7 @@
 #pragma once
-// Guaranteed tetrahedralization by projection (docs/methods.md, "tet-projection"): fills any
-// set of closed, outward-oriented, non-self-intersecting and mutually non-crossing
-// triangulated surfaces with tetrahedra, every coordinate an exact rational.
+// Tetrahedralization by projection (docs/methods.md, "tet-projection"): fills any set of closed,
+// outward, non-self-intersecting, mutually non-crossing triangulated surfaces with tetrahedra in
+// exact rationals; rounding to doubles (rounding.hpp) can flatten a tet, and is then refused.
 //
 // The stages, along the projection axis (z after a cyclic permutation of the coordinates):
 //  1. classify: each triangle is TOP (outward normal up), BOT (down) or WALL (vertical), by
