@@ -97,9 +97,8 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   // No size is asked for: the longest edge stands for h.
   double h = 0.0;
   for (const auto& t : tets.cells)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
+    for (const auto& [a, b] : kTetEdges)
+      h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
   r.h = h > 0.0 ? h : box.size().maxCoeff();
   r.summary = summary_of(exact.stats, rounding, check_seconds, round_seconds);
   return r;
