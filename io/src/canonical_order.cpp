@@ -26,25 +26,13 @@ std::vector<Perm4> even_permutations() {
 // A rotation puts any face at the bottom with any of its corners first: the bottom corners
 // are the face's outward loop reversed, each top corner the bottom corner's edge partner.
 std::vector<Perm8> hex_rotations() {
-  constexpr std::array<std::array<int, 2>, 12> edges{{{0, 1},
-                                                      {1, 2},
-                                                      {2, 3},
-                                                      {3, 0},
-                                                      {4, 5},
-                                                      {5, 6},
-                                                      {6, 7},
-                                                      {7, 4},
-                                                      {0, 4},
-                                                      {1, 5},
-                                                      {2, 6},
-                                                      {3, 7}}};
   std::vector<Perm8> out;
   for (const auto& face : kHexFaces)
     for (int start = 0; start < 4; ++start) {
       Perm8 p{};
       for (int i = 0; i < 4; ++i) p[i] = face[(start + 4 - i) % 4];
       for (int i = 0; i < 4; ++i)
-        for (const auto& e : edges)
+        for (const auto& e : kHexEdges)
           for (int end = 0; end < 2; ++end)
             if (e[end] == p[i] && std::find(face.begin(), face.end(), e[1 - end]) == face.end())
               p[4 + i] = e[1 - end];

@@ -15,7 +15,7 @@
 #include "volmesh/quality/histogram.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
 #include "volmesh/surfacing/remesh.hpp"
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::meshers {
 

@@ -8,6 +8,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/tet/directions.hpp"
 #include "volmesh/tet/projection.hpp"
 #include "volmesh/tet/rounding.hpp"
 
@@ -60,9 +61,8 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   require_no_intersections(surfaces, request.domain_name, kMethod);
   const double check_seconds = seconds_since(clock);
   // A prism too thin for doubles along one direction is not along another: with the axis
-  // left to the method, a mesh that rounding cannot keep positive is made again along a
-  // tilted direction first (rounding fails mostly where a symmetric model's points and edges
-  // meet in projection along every axis), then along the other axes and the other tilts.
+  // left to the method, a mesh that rounding cannot keep positive is made again along the
+  // other directions (directions.hpp) in turn.
   const tet::ProjectionOptions asked = projection_options(request.options);
   std::vector<tet::ProjectionOptions> attempts{asked};
   tet::ProjectionMesh exact;
@@ -73,11 +73,10 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
     exact = tet::tetrahedralize_by_projection(surfaces, attempts[attempt],
                                               part_of(request.progress, 0.05, 0.9));
     if (attempt == 0 && asked.auto_axis) {
-      attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = 1});
-      for (const tet::Axis a : {tet::Axis::z, tet::Axis::x, tet::Axis::y})
-        if (a != exact.stats.axis) attempts.push_back({.auto_axis = false, .axis = a});
-      for (int tilt = 2; tilt <= tet::kTilts; ++tilt)
-        attempts.push_back({.auto_axis = false, .axis = exact.stats.axis, .tilt = tilt});
+      // The first of them is the untilted axis just tried.
+      const std::vector<tet::ProjectionOptions> others =
+          tet::projection_directions(exact.stats.axis);
+      attempts.insert(attempts.end(), others.begin() + 1, others.end());
     }
     clock = Clock::now();
     report(request.progress, "rounding to doubles", 0.9);
@@ -98,9 +97,8 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
   // No size is asked for: the longest edge stands for h.
   double h = 0.0;
   for (const auto& t : tets.cells)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
+    for (const auto& [a, b] : kTetEdges)
+      h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
   r.h = h > 0.0 ? h : box.size().maxCoeff();
   r.summary = summary_of(exact.stats, rounding, check_seconds, round_seconds);
   return r;

@@ -5,18 +5,16 @@
 #include <cmath>
 #include <limits>
 
+#include "volmesh/core/element_mesh.hpp"
+
 namespace volmesh {
 
 HexJacobians hex_jacobians(const std::array<Vec3, 8>& p) {
-  // Corner k and its three neighbours, ordered as Verdict orders them so that the triple
-  // product is positive in a valid hex: bottom corners (next, previous, above), top corners
-  // (previous, next, below) around their quad.
-  constexpr int kCorner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
-                                 {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+  // Corner k's frame: the edges to its three neighbours, positive in a valid hex.
   std::array<std::array<Vec3, 3>, 9> frames;
   for (int k = 0; k < 8; ++k) {
-    const Vec3& o = p[kCorner[k][0]];
-    frames[k] = {p[kCorner[k][1]] - o, p[kCorner[k][2]] - o, p[kCorner[k][3]] - o};
+    const auto& [corner, a, b, c] = kHexCornerFrames[k];
+    frames[k] = {p[a] - p[corner], p[b] - p[corner], p[c] - p[corner]};
   }
   // Derivatives of the trilinear map at the centre (times 4).
   frames[8] = {(p[1] + p[2] + p[5] + p[6]) - (p[0] + p[3] + p[4] + p[7]),

@@ -7,25 +7,26 @@
 #include <limits>
 #include <numbers>
 
+#include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/geometry.hpp"
 
 namespace volmesh {
 
 TetMetrics tet_metrics(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const std::array<const Vec3*, 4> p{&a, &b, &c, &d};
-  // Each edge (i, j) with the two other corners (k, l).
-  constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   TetMetrics m;
   double min_angle = std::numbers::pi, max_angle = 0.0;
   double shortest2 = std::numeric_limits<double>::infinity();
-  for (const auto& e : kEdges) {
-    const Vec3& o = *p[e[0]];
-    const Vec3 edge = *p[e[1]] - o;
+  for (std::size_t e = 0; e < kTetEdges.size(); ++e) {
+    // Edge (i, j) and the two other corners (k, l).
+    const auto& [i, j] = kTetEdges[e];
+    const auto& [k, l] = kTetEdges[kTetOppositeEdges[e]];
+    const Vec3& o = *p[i];
+    const Vec3 edge = *p[j] - o;
     // Crossing with the edge projects k and l onto the plane normal to the edge (and turns
     // both by 90°): the angle between the results is the dihedral angle along the edge.
-    const Vec3 u = edge.cross(*p[e[2]] - o);
-    const Vec3 v = edge.cross(*p[e[3]] - o);
+    const Vec3 u = edge.cross(*p[k] - o);
+    const Vec3 v = edge.cross(*p[l] - o);
     const double angle = std::atan2(u.cross(v).norm(), u.dot(v));
     min_angle = std::min(min_angle, angle);
     max_angle = std::max(max_angle, angle);

@@ -10,7 +10,7 @@
 #include "volmesh/core/validity.hpp"
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/io/surface_io.hpp"
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::tet {
 namespace {

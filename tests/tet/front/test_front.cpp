@@ -12,7 +12,7 @@
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
 #include "front_surfaces.hpp"
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::tet {
 namespace {

@@ -5,6 +5,7 @@
 #include <array>
 #include <span>
 
+#include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/types.hpp"
 
 namespace volmesh::fem {
@@ -32,9 +33,8 @@ inline TetAffine tet_affine(const Vec3& a, const Vec3& b, const Vec3& c, const V
   return t;
 }
 
-// P2 local nodes: the 4 corners, then the 6 edge midpoints in VTK's quadratic-tet order.
-inline constexpr std::array<std::array<int, 2>, 6> kTetEdges{
-    {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}}};
+// P2 local nodes: the 4 corners, then the 6 edge midpoints in core's kTetEdges order, VTK's
+// quadratic-tet order.
 
 inline void p2_tet_values(const std::array<double, 4>& l, std::span<double, 10> n) {
   for (int i = 0; i < 4; ++i) n[i] = l[i] * (2.0 * l[i] - 1.0);

@@ -9,6 +9,7 @@
 #include "aux_grid.hpp"
 #include "face_grid.hpp"
 #include "predicates.hpp"
+#include "volmesh/core/element_mesh.hpp"
 
 namespace volmesh::tet::front {
 
@@ -32,8 +33,6 @@ constexpr double kMinQuality = 1e-3;
 // good (1 = regular); a worse one only when no new node does better. The paper takes any
 // existing node first; this keeps the slivers four front nodes can make out of the mesh.
 constexpr double kGoodQuality = 0.35;
-// Faces of a tet, outward (element_mesh.hpp).
-constexpr std::array<std::array<int, 3>, 4> kFaces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
 // Front faces fetched around a tet's box: a margin for the faces' own extent is not needed
 // (the grid lists a face in every cell its box overlaps).
 
@@ -231,7 +230,7 @@ class Front {
     const std::array<Vec3, 4> p{pts_[t[0]], pts_[t[1]], pts_[t[2]], q};
     // A front face on the tet facing out of it: the other side of it is meshed already.
     const Tet corners{t[0], t[1], t[2], d};
-    for (const auto& f : kFaces)
+    for (const auto& f : kTetFaces)
       if (by_key_.count(canonical({corners[f[0]], corners[f[1]], corners[f[2]]}))) return false;
     const std::array<Corner, 4> tet{Corner{p[0], t[0]}, Corner{p[1], t[1]}, Corner{p[2], t[2]},
                                     Corner{q, d}};
@@ -258,7 +257,7 @@ class Front {
     out.aux_deleted += delete_covered(aux_, p, stride_, deleted);
     // Each face of the tet closes the front face it matches (facing into the tet), or opens
     // a new one facing out of it.
-    for (const auto& f : kFaces) {
+    for (const auto& f : kTetFaces) {
       const Tri face{tet[f[0]], tet[f[1]], tet[f[2]]};
       const auto it = by_key_.find(canonical({face[0], face[2], face[1]}));
       if (it != by_key_.end())

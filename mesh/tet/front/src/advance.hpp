@@ -6,7 +6,7 @@
 
 #include "volmesh/core/progress.hpp"
 #include "volmesh/core/types.hpp"
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::tet::front {
 

@@ -12,9 +12,6 @@ namespace {
 
 using Q3 = std::array<mpq_class, 3>;
 
-// The outward faces of a positive tet (0, 1, 2, 3).
-constexpr std::array<std::array<int, 3>, 4> kOutwardFaces{{{0, 2, 1}, {0, 3, 2}, {0, 1, 3}, {1, 2, 3}}};
-
 Q3 q3(const RationalPoint& p) { return {p.x, p.y, p.z}; }
 Q3 minus(const Q3& a, const Q3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Q3 cross(const Q3& a, const Q3& b) {
@@ -58,7 +55,7 @@ CavitySplit pieces_of_faces(const ProjectionMesh& exact, const TetMesh& rounded,
   for (std::size_t c = 0; c < rounded.cells.size(); ++c) {
     if (rounded.cell_region[c] != cavity) continue;
     const auto& t = rounded.cells[c];
-    for (const auto& f : kOutwardFaces) {
+    for (const auto& f : kTetFaces) {
       const Tri face{t[f[0]], t[f[1]], t[f[2]]};
       auto& [oriented, count] = seen[corners_of(face)];
       oriented = face;

@@ -11,6 +11,7 @@
 #include "nesting.hpp"
 #include "predicates.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/tet/directions.hpp"
 #include "volmesh/tet/projection.hpp"
 #include "volmesh/tet/rounding.hpp"
 
@@ -216,27 +217,27 @@ void close_cavity(TetMesh& mesh, Index label, const std::vector<Tri>& current,
   }
   std::set<Tri> loose_corners;
   for (const Tri& t : loose) loose_corners.insert(corners_of(t));
-  // The directions in turn until one cuts no face of no tet (a boundary triangle, another
-  // cavity's face); else the one that cuts the fewest such faces, then the fewest faces.
+  // The projection directions in turn (directions.hpp, from z) until one cuts no face of no
+  // tet (a boundary triangle, another cavity's face); else the one that cuts the fewest such
+  // faces, then the fewest faces.
   std::vector<Candidate> candidates;
-  for (const Axis a : {Axis::z, Axis::x, Axis::y})
-    for (int tilt = 0; tilt <= kTilts; ++tilt) {
-      Candidate c;
-      try {
-        c.exact = tetrahedralize_by_projection(surfaces, {.auto_axis = false, .axis = a, .tilt = tilt});
-        Rounding rounding;
-        c.rounded = round_to_doubles(c.exact, surfaces, rounding);
-        c.split = pieces_of_faces(c.exact, c.rounded, kCavity, outward);
-      } catch (const InputError&) {
-        continue;
-      }
-      for (const auto& [key, face] : c.split.faces)
-        c.loose_cut += loose_corners.count(corners_of(
-            {global[face.first[0]], global[face.first[1]], global[face.first[2]]}));
-      const bool enough = c.loose_cut == 0;
-      candidates.push_back(std::move(c));
-      if (enough) break;
+  for (const ProjectionOptions& direction : projection_directions(Axis::z)) {
+    Candidate c;
+    try {
+      c.exact = tetrahedralize_by_projection(surfaces, direction);
+      Rounding rounding;
+      c.rounded = round_to_doubles(c.exact, surfaces, rounding);
+      c.split = pieces_of_faces(c.exact, c.rounded, kCavity, outward);
+    } catch (const InputError&) {
+      continue;
     }
+    for (const auto& [key, face] : c.split.faces)
+      c.loose_cut += loose_corners.count(corners_of(
+          {global[face.first[0]], global[face.first[1]], global[face.first[2]]}));
+    const bool enough = c.loose_cut == 0;
+    candidates.push_back(std::move(c));
+    if (enough) break;
+  }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return std::pair{a.loose_cut, a.split.faces.size()} < std::pair{b.loose_cut, b.split.faces.size()};
   });

@@ -6,7 +6,7 @@
 
 #include "merge.hpp"
 #include "volmesh/core/element_mesh.hpp"
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::tet::front {
 

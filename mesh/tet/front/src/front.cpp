@@ -1,6 +1,6 @@
 // tetrahedralize_by_front: one front per surface (its inside, less the surfaces nested
 // directly in it), then the stalled cavities closed (fallback.hpp).
-#include "volmesh/tet/front.hpp"
+#include "volmesh/tet_front/front.hpp"
 
 #include <cmath>
 #include <sstream>

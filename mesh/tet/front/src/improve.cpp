@@ -5,6 +5,7 @@
 #include "flips.hpp"
 #include "live_mesh.hpp"
 #include "smooth.hpp"
+#include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
 
@@ -49,11 +50,19 @@ void count_flip(ImproveStats& s, int ring) {
   else ++s.edge_removals;
 }
 
+// The tet's edges in lexicographic corner order (01 02 03 12 13 23), not kTetEdges' VTK
+// order: the first edge whose removal helps is taken, and equal lengths keep this order, so
+// VTK's order would change the meshes made.
+constexpr std::array<std::array<int, 2>, 6> kEdgesByCorner = [] {
+  std::array<std::array<int, 2>, 6> edges = kTetEdges;
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}();
+
 // Flips around one poor tet: edge removal on its edges, then the 2-3 flip on its faces.
 bool flip_around(LiveMesh& mesh, Index t, ImproveStats& s) {
-  constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   const Tet corners = mesh.tet(t);
-  for (const auto& e : kEdges)
+  for (const auto& e : kEdgesByCorner)
     if (const int ring = remove_edge(mesh, corners[e[0]], corners[e[1]])) {
       count_flip(s, ring);
       return true;
@@ -66,11 +75,12 @@ bool flip_around(LiveMesh& mesh, Index t, ImproveStats& s) {
   // The shortest edges first: a poor tet around a short edge is one a collapse removes.
   std::array<int, 6> order{0, 1, 2, 3, 4, 5};
   const auto length = [&](int e) {
-    return (mesh.point(corners[kEdges[e][0]]) - mesh.point(corners[kEdges[e][1]])).squaredNorm();
+    const auto& [a, b] = kEdgesByCorner[e];
+    return (mesh.point(corners[a]) - mesh.point(corners[b])).squaredNorm();
   };
   std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return length(x) < length(y); });
   for (const int e : order) {
-    const Index a = corners[kEdges[e][0]], b = corners[kEdges[e][1]];
+    const Index a = corners[kEdgesByCorner[e][0]], b = corners[kEdgesByCorner[e][1]];
     if (collapse_edge(mesh, a, b) || collapse_edge(mesh, b, a)) {
       ++s.collapses;
       return true;

@@ -3,14 +3,11 @@
 #include <algorithm>
 
 #include "predicates.hpp"
+#include "volmesh/core/element_mesh.hpp"
 
 namespace volmesh::tet::front {
 
 namespace {
-
-// The faces of a positive tet (0, 1, 2, 3), each facing into it.
-constexpr std::array<std::array<int, 3>, 4> kInwardFaces{{{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}}};
-constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
 Edge edge_key(Index a, Index b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
@@ -118,7 +115,7 @@ bool refine_around(std::vector<Vec3>& points, std::vector<Tet>& cells, std::vect
     const Tet& t = cells[c];
     bool hit = false;
     for (const auto& e : kTetEdges) hit = hit || split.edge_points.count(edge_key(t[e[0]], t[e[1]]));
-    for (const auto& f : kInwardFaces) hit = hit || split.faces.count(corners_of({t[f[0]], t[f[1]], t[f[2]]}));
+    for (const auto& f : kTetFaces) hit = hit || split.faces.count(corners_of({t[f[0]], t[f[1]], t[f[2]]}));
     if (!hit) {
       out_cells.push_back(t);
       out_labels.push_back(labels[c]);
@@ -126,8 +123,8 @@ bool refine_around(std::vector<Vec3>& points, std::vector<Tet>& cells, std::vect
     }
     const Index apex = static_cast<Index>(points.size() + centroids.size());
     centroids.push_back((points[t[0]] + points[t[1]] + points[t[2]] + points[t[3]]) / 4.0);
-    for (const auto& f : kInwardFaces) {
-      const Tri face{t[f[0]], t[f[1]], t[f[2]]};
+    for (const auto& f : kTetFaces) {
+      const Tri face{t[f[0]], t[f[2]], t[f[1]]};  // facing into the tet, towards its centroid
       const std::vector<Tri> pieces = pieces_of(split, face);
       if (pieces.size() > 1) cut.emplace_back(face, pieces);
       for (const Tri& p : pieces) {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "volmesh/core/element_mesh.hpp"
+
 namespace volmesh::tet::front {
 
 namespace {
@@ -75,9 +77,6 @@ bool in_closed_tet(const std::array<Corner, 4>& t, const Vec3& p) {
   return true;
 }
 
-constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-constexpr std::array<std::array<int, 3>, 4> kFaces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
-
 // Whether a plane or a box strictly separates the positive tet from a triangle with no corner
 // of its: a sufficient test, exact, far cheaper than the edge-by-edge one.
 bool separated(const std::array<Corner, 4>& tet, const std::array<Corner, 3>& tri) {
@@ -122,7 +121,7 @@ bool tet_meets_triangle(const std::array<Corner, 4>& tet, const std::array<Corne
     if (!is_one_of(v.id, tet.data(), 4) && in_closed_tet(tet, v.p)) return true;
   for (const auto& e : kTetEdges)
     if (segment_meets_triangle(tet[e[0]], tet[e[1]], tri)) return true;
-  for (const auto& f : kFaces) {
+  for (const auto& f : kTetFaces) {
     const std::array<Corner, 3> face{tet[f[0]], tet[f[1]], tet[f[2]]};
     for (int e = 0; e < 3; ++e)
       if (segment_meets_triangle(tri[e], tri[(e + 1) % 3], face)) return true;

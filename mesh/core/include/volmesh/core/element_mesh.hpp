@@ -44,5 +44,20 @@ inline constexpr std::array<std::array<int, 2>, 6> kTetEdges{
 inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
                                                                {4, 5}, {5, 6}, {6, 7}, {7, 4},
                                                                {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+// For each tet edge (kTetEdges), the one sharing no corner with it.
+inline constexpr std::array<int, 6> kTetOppositeEdges{5, 3, 4, 1, 2, 0};
+
+// Each corner of the reference hex with its three edge neighbours, ordered (as Verdict orders
+// them) so that the edges from the corner to them make a positive frame in a valid hex:
+// bottom corners (next, previous around the bottom quad, above), top corners (previous, next,
+// below). The frame's determinant is 6 times the volume of the corner's tet.
+inline constexpr std::array<std::array<int, 4>, 8> kHexCornerFrames{{{0, 1, 3, 4},
+                                                                     {1, 2, 0, 5},
+                                                                     {2, 3, 1, 6},
+                                                                     {3, 0, 2, 7},
+                                                                     {4, 7, 5, 0},
+                                                                     {5, 4, 6, 1},
+                                                                     {6, 5, 7, 2},
+                                                                     {7, 6, 4, 3}}};
 
 }  // namespace volmesh
