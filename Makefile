@@ -35,8 +35,11 @@ build: deps-build
 demo: build
 	$(BUILD)/apps/volmesh/volmesh demo -o demo-output
 
+# --timeout: the limit of any test that does not set its own (tests/CMakeLists.txt sets 600 s).
+TEST_TIMEOUT := 600
+
 test: deps-test build
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	ctest --test-dir $(BUILD) --output-on-failure --timeout $(TEST_TIMEOUT) -j $(JOBS)
 
 # The unit tests once more under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
 # after `make test`); any report fails the run.
@@ -45,7 +48,7 @@ test-sanitize: deps-test
 	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -L unit
+	  ctest --test-dir $(ASAN_BUILD) --output-on-failure --timeout $(TEST_TIMEOUT) -j $(JOBS) -L unit
 
 clean:
 	rm -rf build demo-output

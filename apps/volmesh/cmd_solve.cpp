@@ -57,10 +57,8 @@ struct Input {
   std::vector<Index> cell_part;
 };
 
-// The reading and checking of a mesh file; numbers[1]: the check's seconds.
-PolyMesh read_checked(const SolveOptions& opt, std::vector<Index>* cell_part,
-                      std::vector<double>& numbers) {
-  PolyMesh mesh = cell_part ? read_pieces_on_ranks(opt.mesh, *cell_part) : read_mesh(opt.mesh);
+// Refuses a mesh read from a file that is not valid; numbers[1]: the check's seconds.
+void check_read(const SolveOptions& opt, const PolyMesh& mesh, std::vector<double>& numbers) {
   const Clock::time_point checking = Clock::now();
   const ValidityReport r = check_validity(mesh);
   numbers[1] = seconds_since(checking);
@@ -68,23 +66,33 @@ PolyMesh read_checked(const SolveOptions& opt, std::vector<Index>* cell_part,
     throw InputError(opt.mesh + ": invalid mesh, not solved (" +
                      (r.problems.empty() ? std::string("see volmesh check") : r.problems.front()) +
                      ")");
-  return mesh;
 }
 
 // Rank 0 reads or meshes (distributed.hpp), or under mpirun every rank reads its piece of a
-// partitioned PVTU; every rank opens the domain.
+// partitioned PVTU; every rank opens the domain. All of it is the stage "mesh".
 Input read_input(const SolveOptions& opt, const Progress& progress) {
   Input in;
   std::vector<double> numbers{0.0, 0.0};  // h, check seconds
   if (!opt.mesh.empty()) {
     report(progress, "reading " + opt.mesh, 0.0);
-    // A check that fails fails alike on every rank: they all hold the same mesh.
-    if (fem::distributed_run() && std::filesystem::path(opt.mesh).extension() == ".pvtu")
-      in.mesh = read_checked(opt, &in.cell_part, numbers);
+    const bool pieces =
+        fem::distributed_run() && std::filesystem::path(opt.mesh).extension() == ".pvtu";
+    if (pieces)
+      in.mesh = read_pieces_on_ranks(opt.mesh, in.cell_part);
     else
-      in.mesh = mesh_on_rank_zero([&] { return read_checked(opt, nullptr, numbers); }, &numbers);
+      in.mesh = mesh_on_rank_zero(
+          [&] {
+            PolyMesh mesh = read_mesh(opt.mesh);
+            check_read(opt, mesh, numbers);
+            return mesh;
+          },
+          &numbers);
+    fem::stage("mesh", [&] {
+      // The ranks hold the same mesh: a check that fails fails alike on every rank.
+      if (pieces) check_read(opt, in.mesh, numbers);
+      in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
+    });
     in.check_seconds = numbers[1];
-    in.domain = opt.domain.empty() ? mesh_as_domain(in.mesh, opt.mesh) : open_domain(opt.domain);
     in.domain_name = opt.domain.empty() ? opt.mesh : domain_display_name(opt.domain);
     in.own_boundary = opt.domain.empty();
     return in;
@@ -108,7 +116,9 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
       },
       &numbers);
   in.h = numbers[0];
-  if (!in.domain) in.domain = open_domain(spec);
+  fem::stage("mesh", [&] {
+    if (!in.domain) in.domain = open_domain(spec);
+  });
   return in;
 }
 
@@ -156,10 +166,12 @@ int run_solve(const SolveOptions& opt) {
   const double partition_seconds = seconds_since(partitioning);
   const Solver solver{opt.solver, distributed ? &cell_rank : nullptr};
   const Clock::time_point setting_up = Clock::now();
-  const SpaceChoice space = choose_space(opt.space, in.default_space, in.mesh);
-  const Progress solving = part_of(progress, kMeshShare, kWriteStart,
-                                   "solving " + opt.kind + " (" + space.name() + "): ");
+  const auto solving = [&](const SpaceChoice& space) {
+    return part_of(progress, kMeshShare, kWriteStart,
+                   "solving " + opt.kind + " (" + space.name() + "): ");
+  };
 
+  SpaceChoice space;
   Index dofs = 0;
   fem::LinearSolveReport report;
   std::optional<fem::ErrorNorms> errors;
@@ -172,26 +184,34 @@ int run_solve(const SolveOptions& opt) {
   // boundary tag without a condition, a cell the space refuses) names the file.
   try {
     if (elasticity) {
-      fem::ElasticityProblem problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+      fem::ElasticityProblem problem;
+      fem::stage("setup", [&] {
+        space = choose_space(opt.space, in.default_space, in.mesh);
+        problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+      });
       if (in.own_boundary) problem.to_true_boundary = nullptr;
       problem_seconds = seconds_since(setting_up);
-      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving, solver);
+      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving(space), solver);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       const Clock::time_point evaluating = Clock::now();
-      fields = vector_fields(in.mesh, s, problem);
+      fem::stage("errors", [&] { fields = vector_fields(in.mesh, s, problem); });
       fields_seconds = seconds_since(evaluating);
     } else {
-      fem::PoissonProblem problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+      fem::PoissonProblem problem;
+      fem::stage("setup", [&] {
+        space = choose_space(opt.space, in.default_space, in.mesh);
+        problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+      });
       if (in.own_boundary) problem.to_true_boundary = nullptr;
       if (!warning.empty() && rank_zero) {
         progress_line.clear();
         std::cerr << "warning: " << warning << "\n";
       }
       problem_seconds = seconds_since(setting_up);
-      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving, solver);
+      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving(space), solver);
       dofs = s.dofs, report = s.solve, errors = s.errors;
       const Clock::time_point evaluating = Clock::now();
-      fields = scalar_fields(in.mesh, s, problem);
+      fem::stage("errors", [&] { fields = scalar_fields(in.mesh, s, problem); });
       fields_seconds = seconds_since(evaluating);
     }
   } catch (const InputError& e) {

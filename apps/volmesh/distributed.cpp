@@ -92,38 +92,22 @@ void cell_list_arrays(Io& io, CellList& list) {
   io(list.tagged_vertices);
 }
 
-// Runs fn on every rank; when it throws on any rank, every rank throws (rank 0 has the
-// message printed once).
-template <class Fn>
-void on_every_rank(Fn&& fn) {
-  std::string error;
-  try {
-    fn();
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  fem::agree(error);
-}
-
 }  // namespace
 
 PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make, std::vector<double>* numbers) {
-  if (fem::ranks() == 1) return make();
+  const bool shared = fem::ranks() > 1;
   PolyMesh mesh;
   std::vector<char> bytes;
-  std::string error;
-  if (fem::rank() == 0) {
-    try {
-      mesh = make();
-      Bytes out(bytes);
-      auto put = [&out](auto& v) { out.put(v); };
-      mesh_arrays(put, mesh);
-      if (numbers) out.put(*numbers);
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
-  fem::agree(error);
+  fem::stage("mesh", [&] {
+    if (fem::rank() != 0) return;
+    mesh = make();
+    if (!shared) return;
+    Bytes out(bytes);
+    auto put = [&out](auto& v) { out.put(v); };
+    mesh_arrays(put, mesh);
+    if (numbers) out.put(*numbers);
+  });
+  if (!shared) return mesh;
   fem::broadcast(bytes);
   if (fem::rank() != 0) {
     Bytes in(bytes);
@@ -136,7 +120,7 @@ PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make, std::vector<do
 
 PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Index>& cell_rank) {
   std::vector<std::filesystem::path> files;
-  on_every_rank([&] {
+  fem::stage("mesh", [&] {
     files = pvtu_piece_files(pvtu);
     if (files.size() != std::size_t(fem::ranks()))
       throw InputError(pvtu.string() + ": " + std::to_string(files.size()) + " pieces for " +
@@ -145,7 +129,7 @@ PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Ind
                        std::to_string(fem::ranks()) + ")");
   });
   std::vector<char> bytes;
-  on_every_rank([&] {
+  fem::stage("mesh", [&] {
     CellList mine = read_vtu_piece(files[fem::rank()]);
     Bytes out(bytes);
     auto put = [&out](auto& v) { out.put(v); };
@@ -159,7 +143,7 @@ PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Ind
     cell_list_arrays(get, pieces[r]);
   }
   PolyMesh mesh;
-  on_every_rank([&] { mesh = stitch_pieces(pieces, pvtu.string(), &cell_rank); });
+  fem::stage("mesh", [&] { mesh = stitch_pieces(pieces, pvtu.string(), &cell_rank); });
   return mesh;
 }
 
@@ -171,7 +155,7 @@ std::vector<Index> partition_for_ranks(const PolyMesh& mesh) {
                      " cells: give every rank at least one cell (fewer ranks, or a finer mesh)");
   std::vector<Index> cell_rank;
   std::vector<char> bytes;
-  on_every_rank([&] {
+  fem::stage("partition", [&] {
     if (fem::rank() != 0) return;
     PartitionOptions options;
     options.parts = ranks;
@@ -216,7 +200,7 @@ MeshFields piece_fields(const MeshFields& fields, const PartMesh& part) {
 void write_solution(const PolyMesh& mesh, const MeshFields& fields,
                     const std::vector<Index>& cell_rank, const std::filesystem::path& path) {
   if (path.extension() != ".pvtu") {
-    on_every_rank([&] {
+    fem::stage("write", [&] {
       if (fem::rank() == 0) write_mesh(mesh, path, fields);
     });
     return;
@@ -226,7 +210,7 @@ void write_solution(const PolyMesh& mesh, const MeshFields& fields,
   const std::vector<Index>& parts = cell_rank.empty() ? one_part : cell_rank;
   std::unique_ptr<PvtuSet> set;
   std::vector<char> directory;
-  on_every_rank([&] {
+  fem::stage("write", [&] {
     if (fem::rank() != 0) return;
     set = std::make_unique<PvtuSet>(path);
     const std::string name = set->pieces_directory().string();
@@ -234,14 +218,14 @@ void write_solution(const PolyMesh& mesh, const MeshFields& fields,
   });
   fem::broadcast(directory);
   MeshFields arrays;
-  on_every_rank([&] {
+  fem::stage("write", [&] {
     std::vector<PartMesh> pieces = split_mesh(mesh, parts, ranks);
     PartMesh& mine = pieces[fem::rank()];
     MeshPiece piece{std::move(mine.mesh), piece_fields(fields, mine)};
     write_pvtu_piece(piece, fem::rank(), std::string(directory.begin(), directory.end()), path);
     arrays = std::move(piece.fields);
   });
-  on_every_rank([&] {
+  fem::stage("write", [&] {
     if (fem::rank() == 0) set->commit(arrays, ranks);
   });
 }

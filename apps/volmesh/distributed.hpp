@@ -5,6 +5,8 @@
 // of a partitioned PVTU, one each, and take its parts as theirs), and the output is written
 // by rank 0 (.vtu) or by every rank, one piece each (.pvtu). Every rank holds the whole
 // mesh: the solve's matrix, preconditioner and vectors are distributed, the mesh is not.
+// Each step is a stage of fem::stage ("mesh", "partition", "write"): a failure on any rank
+// makes every rank throw.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -17,8 +19,8 @@
 namespace volmesh::cli {
 
 // Rank 0's result of make() on every rank, with rank 0's `numbers` (what else make() found
-// that the others need, e.g. the mesh size h). When make() throws on rank 0, every rank
-// throws its message (fem::agree). One rank: make() alone.
+// that the others need, e.g. the mesh size h). The stage "mesh" (fem::stage): when make()
+// throws on rank 0, every rank throws its message. One rank: make() alone.
 PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make,
                            std::vector<double>* numbers = nullptr);
 

@@ -41,6 +41,10 @@ int main(int argc, char** argv) {
   keep_freed_memory();
   // Takes PETSc's options off the command line before CLI11 sees it; PETSc stops when it ends.
   fem::Session session(argc, argv);
+  if (!fem::petsc_options_misplaced().empty()) {
+    if (fem::rank() == 0) std::cerr << "volmesh: error: " << fem::petsc_options_misplaced() << "\n";
+    return 2;
+  }
   if (!fem::petsc_built() && !fem::petsc_arguments().empty()) {
     std::cerr << "volmesh: error: " << fem::petsc_arguments().front()
               << " is a PETSc option, and this volmesh was built without PETSc\n";

@@ -89,7 +89,8 @@ void add_solver_option(CLI::App& app, SolverBackend& backend) {
   app.add_option("--solver", backend,
                  "who solves the large systems: auto (PETSc CG + BoomerAMG when built with "
                  "PETSc, else Eigen), eigen (CG + incomplete Cholesky), petsc; PETSc's own "
-                 "options (-ksp_*, -pc_*, -log_view) go after the arguments")
+                 "options (-ksp_*, -pc_*, -log_view) go after the subcommand's own arguments, "
+                 "or after --")
       ->transform(CLI::CheckedTransformer(names))
       ->default_str("auto");
 }

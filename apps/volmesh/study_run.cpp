@@ -50,19 +50,20 @@ std::string series_name(const std::string& method, const meshers::MethodOptions&
   return name;
 }
 
+// The problem's set-up is the stage "setup" (fem::stage), the solve's own stages follow.
 fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
                             const PolyMesh& mesh, const SpaceChoice& space,
                             const Progress& progress, const Solver& solver) {
   fem::LevelSolve out;
   if (kind == fem::ProblemKind::elasticity) {
-    const fem::VectorSolution s =
-        solve_vector(mesh, elasticity_problem(spec.problem, domain, mesh), space, progress,
-                     solver);
+    fem::ElasticityProblem problem;
+    fem::stage("setup", [&] { problem = elasticity_problem(spec.problem, domain, mesh); });
+    const fem::VectorSolution s = solve_vector(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   } else {
-    const fem::ScalarSolution s =
-        solve_scalar(mesh, poisson_problem(spec.problem, domain, mesh), space, progress,
-                     solver);
+    fem::PoissonProblem problem;
+    fem::stage("setup", [&] { problem = poisson_problem(spec.problem, domain, mesh); });
+    const fem::ScalarSolution s = solve_scalar(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   }
   return out;
@@ -128,7 +129,9 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
             return std::move(r.mesh);
           },
           &h);
-      if (!space) space = choose_space(spec.space, method.default_space, m);
+      fem::stage("setup", [&] {
+        if (!space) space = choose_space(spec.space, method.default_space, m);
+      });
       return fem::StudyMesh{std::move(m), h[0]};
     };
     const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {

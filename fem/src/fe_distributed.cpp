@@ -37,11 +37,10 @@ Distribution distribute(const FeSpace& space, const std::vector<Index>& cell_ran
   return d;
 }
 
-Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
-                                  const Distribution& distribution, const GlobalSystem& system,
-                                  const std::vector<char>& fixed,
-                                  const Eigen::VectorXd& fixed_values,
-                                  const LinearSolverOptions& options, LinearSolveReport& report) {
+DistributedSystem distributed_rows(const FeSpace& space, int components,
+                                   const Distribution& distribution, const GlobalSystem& system,
+                                   const std::vector<char>& fixed,
+                                   const Eigen::VectorXd& fixed_values, LinearSolveReport& report) {
   const auto start = std::chrono::steady_clock::now();
   const int me = rank(), count = ranks();
   const Index nn = space.num_nodes();
@@ -55,17 +54,18 @@ Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
   for (int r = 0; r < count; ++r) first[r + 1] += first[r];
   if (first[count] > kMaxIndex)
     throw InputError("mesh: more unknowns than 32-bit indices allow");
-  std::vector<Index> global(ndof, kNoIndex);
+  DistributedSystem out;
+  out.global.assign(ndof, kNoIndex);
   {
     std::vector<std::int64_t> next(first.begin(), first.end() - 1);
     for (Index dof = 0; dof < ndof; ++dof)
-      if (!fixed[dof]) global[dof] = static_cast<Index>(next[owner_of(dof)]++);
+      if (!fixed[dof]) out.global[dof] = static_cast<Index>(next[owner_of(dof)]++);
   }
 
   // This rank's whole rows, fixed columns moved to the right-hand side.
   const Eigen::SparseMatrix<double, Eigen::RowMajor> full =
       system.lower.selfadjointView<Eigen::Lower>();
-  OwnedRows rows;
+  OwnedRows& rows = out.rows;
   rows.distributed = true;
   rows.first = static_cast<Index>(first[me]);
   rows.global = static_cast<Index>(first[count]);
@@ -82,7 +82,7 @@ Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
       if (fixed[col])
         rhs -= it.value() * fixed_values[col];
       else
-        row.emplace_back(global[col], it.value());
+        row.emplace_back(out.global[col], it.value());
     }
     std::sort(row.begin(), row.end());
     for (const auto& [col, value] : row) {
@@ -96,12 +96,19 @@ Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
   report.unknowns = rows.global;
   report.assembly_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
 
-  const Eigen::VectorXd mine = petsc_solve_spd(rows, options, report);
+Eigen::VectorXd solve_distributed(const DistributedSystem& system, const std::vector<char>& fixed,
+                                  const Eigen::VectorXd& fixed_values,
+                                  const LinearSolverOptions& options, LinearSolveReport& report) {
+  const Eigen::VectorXd mine = petsc_solve_spd(system.rows, options, report);
   const auto gathering = std::chrono::steady_clock::now();
   const std::vector<double> all = gather_to_all(mine.data(), std::size_t(mine.size()));
+  const Index ndof = static_cast<Index>(fixed.size());
   Eigen::VectorXd u(ndof);
-  for (Index dof = 0; dof < ndof; ++dof) u[dof] = fixed[dof] ? fixed_values[dof] : all[global[dof]];
+  for (Index dof = 0; dof < ndof; ++dof)
+    u[dof] = fixed[dof] ? fixed_values[dof] : all[system.global[dof]];
   report.solve_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - gathering).count();
   return u;

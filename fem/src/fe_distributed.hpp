@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fe_assembly.hpp"
+#include "petsc_solve.hpp"
 #include "volmesh/fem/linear_solver.hpp"
 
 namespace volmesh::fem::detail {
@@ -24,13 +25,21 @@ struct Distribution {
 // Throws InputError when cell_rank does not give every cell a rank in [0, ranks).
 Distribution distribute(const FeSpace& space, const std::vector<Index>& cell_rank);
 
-// The whole solution on every rank, from a system whose owned rows `system` holds whole
-// (assembled over distribution.cells), the `fixed` unknowns taking `fixed_values`.
-// Collective. Fills report as solve_spd does; the conversion to PETSc's rows counts as
-// assembly.
-Eigen::VectorXd solve_distributed(const FeSpace& space, int components,
-                                  const Distribution& distribution, const GlobalSystem& system,
-                                  const std::vector<char>& fixed,
+// This rank's rows of a system whose owned rows `system` holds whole (assembled over
+// distribution.cells), the `fixed` unknowns taking `fixed_values`, and the global number of
+// every free unknown. This rank's work alone; counts as assembly in report. Throws
+// InputError past 32-bit indices.
+struct DistributedSystem {
+  OwnedRows rows;
+  std::vector<Index> global;  // per unknown; kNoIndex for a fixed one
+};
+DistributedSystem distributed_rows(const FeSpace& space, int components,
+                                   const Distribution& distribution, const GlobalSystem& system,
+                                   const std::vector<char>& fixed,
+                                   const Eigen::VectorXd& fixed_values, LinearSolveReport& report);
+
+// The whole solution on every rank. Collective. Fills report as solve_spd does.
+Eigen::VectorXd solve_distributed(const DistributedSystem& system, const std::vector<char>& fixed,
                                   const Eigen::VectorXd& fixed_values,
                                   const LinearSolverOptions& options, LinearSolveReport& report);
 

@@ -132,7 +132,8 @@ struct SolvedField {
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
 // fixes the nodes on essential tags (the lowest such tag of a node wins; values taken on
 // the true boundary), solves. report.setup_seconds counts from `start` (the caller's
-// per-cell data). Throws as split_conditions does.
+// per-cell data). Throws as split_conditions does. Everything before the linear solve is
+// each rank's own work, the stage "assembly" (fem::stage).
 template <int C, class Condition, class Local>
 SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
                         const std::map<std::string, Condition>& boundary,
@@ -146,50 +147,57 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
     lap = now;
     return s;
   };
-  const TagConditions<Condition> conditions =
-      split_conditions(mesh, boundary);
-  volmesh::report(options.progress, "assembly", 0.0);
   SolvedField out;
-  out.space = make_space(mesh, space_kind, to_true_boundary);
-  const FeSpace& space = *out.space;
   Distribution distribution;
-  if (options.cell_rank) {
-    distribution = distribute(space, *options.cell_rank);
-    out.own_cell = distribution.own_cell;
-  }
-  const double space_seconds = stage_seconds();
-  GlobalSystem system = assemble_cells(
-      space, C, [&space, &local](Index c, LocalWork& work) { local(space, c, work); },
-      &out.internal_rows, options.cell_rank ? &distribution.cells : nullptr);
-  add_boundary_load(
-      mesh, space, C, conditions.natural, to_true_boundary,
-      [&](Index tag, const Vec3& at, double* values) {
-        const auto& value = conditions.of_tag[tag]->value;
-        const NodeVector<C> g = value ? as_node_vector(value(at)) : NodeVector<C>::Zero();
-        std::copy(g.data(), g.data() + C, values);
-      },
-      system.rhs);
-  const double assembly_seconds = stage_seconds();
+  GlobalSystem system;
+  std::vector<char> fixed;
+  Eigen::VectorXd fixed_values;
+  DistributedSystem rows;  // a distributed solve's
+  double space_seconds = 0.0, assembly_seconds = 0.0, boundary_seconds = 0.0;
+  stage("assembly", [&] {
+    const TagConditions<Condition> conditions = split_conditions(mesh, boundary);
+    volmesh::report(options.progress, "assembly", 0.0);
+    out.space = make_space(mesh, space_kind, to_true_boundary);
+    const FeSpace& space = *out.space;
+    if (options.cell_rank) {
+      distribution = distribute(space, *options.cell_rank);
+      out.own_cell = distribution.own_cell;
+    }
+    space_seconds = stage_seconds();
+    system = assemble_cells(
+        space, C, [&space, &local](Index c, LocalWork& work) { local(space, c, work); },
+        &out.internal_rows, options.cell_rank ? &distribution.cells : nullptr);
+    add_boundary_load(
+        mesh, space, C, conditions.natural, to_true_boundary,
+        [&](Index tag, const Vec3& at, double* values) {
+          const auto& value = conditions.of_tag[tag]->value;
+          const NodeVector<C> g = value ? as_node_vector(value(at)) : NodeVector<C>::Zero();
+          std::copy(g.data(), g.data() + C, values);
+        },
+        system.rhs);
+    assembly_seconds = stage_seconds();
 
-  const Index nn = space.num_nodes();
-  const std::vector<Index> essential_tag = lowest_marked_tag(mesh, space, conditions.essential);
-  std::vector<char> fixed(C * std::size_t(nn), 0);
-  Eigen::VectorXd fixed_values = Eigen::VectorXd::Zero(C * Eigen::Index(nn));
-  for (Index n = 0; n < nn; ++n) {
-    if (essential_tag[n] == kNoIndex) continue;
-    std::fill_n(fixed.begin() + C * std::size_t(n), C, 1);
-    const auto& value = conditions.of_tag[essential_tag[n]]->value;
-    if (value)
-      fixed_values.segment<C>(C * Eigen::Index(n)) =
-          as_node_vector(value(on_true_boundary(to_true_boundary, space.node_point[n])));
-  }
-  const double boundary_seconds = stage_seconds();
+    const Index nn = space.num_nodes();
+    const std::vector<Index> essential_tag = lowest_marked_tag(mesh, space, conditions.essential);
+    fixed.assign(C * std::size_t(nn), 0);
+    fixed_values = Eigen::VectorXd::Zero(C * Eigen::Index(nn));
+    for (Index n = 0; n < nn; ++n) {
+      if (essential_tag[n] == kNoIndex) continue;
+      std::fill_n(fixed.begin() + C * std::size_t(n), C, 1);
+      const auto& value = conditions.of_tag[essential_tag[n]]->value;
+      if (value)
+        fixed_values.segment<C>(C * Eigen::Index(n)) =
+            as_node_vector(value(on_true_boundary(to_true_boundary, space.node_point[n])));
+    }
+    boundary_seconds = stage_seconds();
+    if (options.cell_rank)
+      rows = distributed_rows(space, C, distribution, system, fixed, fixed_values, report);
+  });
   volmesh::report(options.progress, "linear solve", kLinearSolveStart);
   out.u = options.cell_rank
-              ? solve_distributed(space, C, distribution, system, fixed, fixed_values, options,
-                                  report)
+              ? solve_distributed(rows, fixed, fixed_values, options, report)
               : solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options,
-                                      report, {C, &space.node_point});
+                                      report, {C, &out.space->node_point});
   out.node_owner = std::move(distribution.node_owner);
   report.setup_seconds += space_seconds + boundary_seconds;
   report.assembly_seconds += assembly_seconds;
@@ -202,11 +210,14 @@ template <int C, class Exact>
 double nodal_max_error(const SolvedField& field, const Exact& exact) {
   const bool distributed = !field.node_owner.empty();
   const int me = distributed ? rank() : 0;
-  const double mine = largest_of(field.space->num_nodes(), [&](Index n) {
-    if (distributed && field.node_owner[n] != me) return 0.0;
-    return (as_node_vector(exact(field.space->node_point[n])) -
-            field.u.segment<C>(C * Eigen::Index(n)))
-        .norm();
+  double mine = 0.0;
+  stage("errors", [&] {
+    mine = largest_of(field.space->num_nodes(), [&](Index n) {
+      if (distributed && field.node_owner[n] != me) return 0.0;
+      return (as_node_vector(exact(field.space->node_point[n])) -
+              field.u.segment<C>(C * Eigen::Index(n)))
+          .norm();
+    });
   });
   return distributed ? max_over_ranks(mine) : mine;
 }
@@ -272,15 +283,18 @@ void integrate_points(const CellPoints& q, const Eigen::VectorXd& local_u, Index
 // result comes from one rank, zeros from the others: the same numbers as one rank's).
 template <int C, class CellResult, class Fn>
 std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, const Fn& fn) {
-  std::vector<CellResult> out(field.space->num_cells());
-  for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
-    if (!field.own_cell.empty() && !field.own_cell[c]) return;
-    Eigen::VectorXd local_u;
-    cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
-    if (field.space->cell_pieces(c, rule, work.pieces))
-      return integrate_pieces<C>(work.pieces, local_u, c, fn, out[c]);
-    field.space->cell_points(c, rule, work.load);
-    integrate_points<C>(work.load, local_u, c, fn, out[c]);
+  std::vector<CellResult> out;
+  stage("errors", [&] {
+    out.resize(field.space->num_cells());
+    for_each_cell(0, field.space->num_cells(), [&](Index c, LocalWork& work) {
+      if (!field.own_cell.empty() && !field.own_cell[c]) return;
+      Eigen::VectorXd local_u;
+      cell_unknowns(*field.space, C, field.internal_rows, c, field.u, work, local_u);
+      if (field.space->cell_pieces(c, rule, work.pieces))
+        return integrate_pieces<C>(work.pieces, local_u, c, fn, out[c]);
+      field.space->cell_points(c, rule, work.load);
+      integrate_points<C>(work.load, local_u, c, fn, out[c]);
+    });
   });
   if (!field.own_cell.empty()) {
     static_assert(sizeof(CellResult) % sizeof(double) == 0, "a cell result is doubles only");

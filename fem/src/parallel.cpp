@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <iostream>
 #include <stdexcept>
 #include <thread>
 
@@ -20,6 +22,7 @@ namespace {
 
 struct State {
   std::vector<std::string> arguments;  // PETSc's options from the command line
+  std::string misplaced;               // what is wrong with where they stand
   bool started = false;
   bool distributed = false;
   int rank = 0, ranks = 1;
@@ -30,8 +33,9 @@ State& state() {
   return s;
 }
 
-// "-name" with a letter after the single dash and an underscore in an identifier: PETSc's
-// option names (-ksp_rtol, -pc_type, -log_view); expressions such as "-x*y" do not match.
+// "-name" whose name starts with a letter and is letters, digits and underscores, with at
+// least one underscore: PETSc's option names (-ksp_rtol, -pc_type, -log_view). volmesh's own
+// options are "--name" or one letter ("-o"); expressions such as "-x*y" do not match.
 bool is_petsc_option(const char* word) {
   if (word[0] != '-' || !std::isalpha(static_cast<unsigned char>(word[1]))) return false;
   bool underscore = false;
@@ -42,8 +46,12 @@ bool is_petsc_option(const char* word) {
   return underscore;
 }
 
-bool starts_like_option(const char* word) {
-  return word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+// An option of volmesh's own: "--name", or '-' and a letter that is not PETSc's ("-o"; a
+// negative number is a value).
+bool is_volmesh_option(const char* word) {
+  if (word[0] != '-') return false;
+  if (word[1] == '-') return word[2] != '\0';
+  return std::isalpha(static_cast<unsigned char>(word[1])) && !is_petsc_option(word);
 }
 
 // Set by mpirun (Open MPI, MPICH/PMI, PMIx): the run has several processes from the start.
@@ -57,13 +65,24 @@ bool launched_by_mpirun() {
 Session::Session(int& argc, char** argv) {
   State& s = state();
   int kept = 1;
+  const char* first = nullptr;  // the first PETSc option
   for (int i = 1; i < argc; ++i) {
-    if (!is_petsc_option(argv[i])) {
+    const char* word = argv[i];
+    if (std::strcmp(word, "--") == 0) {
+      s.arguments.insert(s.arguments.end(), argv + i + 1, argv + argc);
+      break;
+    }
+    if (!first && !is_petsc_option(word)) {
       argv[kept++] = argv[i];
       continue;
     }
-    s.arguments.emplace_back(argv[i]);
-    if (i + 1 < argc && !starts_like_option(argv[i + 1])) s.arguments.emplace_back(argv[++i]);
+    if (!first) first = word;
+    if (!is_volmesh_option(word)) {
+      s.arguments.emplace_back(word);  // a PETSc option or its value
+    } else if (s.misplaced.empty()) {
+      s.misplaced = std::string(word) + " follows the PETSc option " + first +
+                    ": PETSc options go after the subcommand's own arguments, or after --";
+    }
   }
   argc = kept;
   argv[argc] = nullptr;
@@ -74,10 +93,24 @@ Session::Session(int& argc, char** argv) {
 }
 
 const std::vector<std::string>& petsc_arguments() { return state().arguments; }
+const std::string& petsc_options_misplaced() { return state().misplaced; }
 bool petsc_started() { return state().started; }
 bool distributed_run() { return state().distributed; }
 int rank() { return state().rank; }
 int ranks() { return state().ranks; }
+
+void fail_if_injected(const char* stage, bool at_start) {
+  static const std::string injected = [] {
+    const char* v = std::getenv("VOLMESH_TEST_FAIL_STAGE");
+    return std::string(v ? v : "");
+  }();
+  if (injected.empty()) return;
+  const std::string here =
+      std::string(stage) + "@" + std::to_string(rank()) + (at_start ? ":start" : "");
+  if (injected != here) return;
+  throw std::runtime_error("stage " + std::string(stage) + " failed on rank " +
+                           std::to_string(rank()) + " (VOLMESH_TEST_FAIL_STAGE, a test's failure)");
+}
 
 #ifdef VOLMESH_HAVE_PETSC
 
@@ -87,6 +120,13 @@ std::string backend_summary() {
   return "linear solvers: Eigen (LDLT, CG + incomplete Cholesky), PETSc " +
          std::to_string(PETSC_VERSION_MAJOR) + "." + std::to_string(PETSC_VERSION_MINOR) + "." +
          std::to_string(PETSC_VERSION_SUBMINOR) + " (CG + hypre BoomerAMG)";
+}
+
+// The ranks' agreements (agree) on their own communicator: a rank that failed waits there
+// without matching a collective that PETSc starts on PETSC_COMM_WORLD on the others.
+MPI_Comm& agreement_comm() {
+  static MPI_Comm comm = MPI_COMM_NULL;
+  return comm;
 }
 
 void start_petsc() {
@@ -106,11 +146,14 @@ void start_petsc() {
   PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   MPI_Comm_rank(PETSC_COMM_WORLD, &s.rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &s.ranks);
+  MPI_Comm_dup(PETSC_COMM_WORLD, &agreement_comm());
   s.started = true;
 }
 
 Session::~Session() {
-  if (state().started) PetscFinalize();
+  if (!state().started) return;
+  MPI_Comm_free(&agreement_comm());
+  PetscFinalize();
 }
 
 void sum_over_ranks(double* values, std::size_t count) {
@@ -148,15 +191,15 @@ std::vector<double> gather_to_all(const double* mine, std::size_t count) {
 
 namespace {
 
-void broadcast_from(std::vector<char>& bytes, int root) {
+void broadcast_from(std::vector<char>& bytes, int root, MPI_Comm comm = PETSC_COMM_WORLD) {
   std::int64_t size = static_cast<std::int64_t>(bytes.size());
-  MPI_Bcast(&size, 1, MPI_INT64_T, root, PETSC_COMM_WORLD);
+  MPI_Bcast(&size, 1, MPI_INT64_T, root, comm);
   bytes.resize(size);
   // Large meshes in chunks: MPI counts are int.
   constexpr std::int64_t kChunk = std::int64_t(1) << 30;
   for (std::int64_t at = 0; at < size; at += kChunk)
     MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kChunk, size - at)), MPI_CHAR, root,
-              PETSC_COMM_WORLD);
+              comm);
 }
 
 }  // namespace
@@ -184,13 +227,18 @@ namespace {
 constexpr auto kIdlePoll = std::chrono::milliseconds(1);
 
 // Returns once every rank has called it, sleeping meanwhile: Open MPI's blocking collectives
-// poll a core, which the rank still working (rank 0 meshing, with its threads) needs.
-void wait_for_every_rank() {
+// poll a core, which the rank still working (rank 0 meshing, with its threads) needs. A rank
+// that failed waits kStrandedSeconds at most; false then.
+bool wait_for_every_rank(bool failed) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   MPI_Request request;
-  MPI_Ibarrier(PETSC_COMM_WORLD, &request);
+  MPI_Ibarrier(agreement_comm(), &request);
   for (int done = 0;;) {
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-    if (done) return;
+    if (done) return true;
+    if (failed && std::chrono::duration<double>(Clock::now() - start).count() > kStrandedSeconds)
+      return false;
     std::this_thread::sleep_for(kIdlePoll);
   }
 }
@@ -202,13 +250,18 @@ void agree(const std::string& error) {
     if (!error.empty()) throw InputError(error);
     return;
   }
-  wait_for_every_rank();
+  if (!wait_for_every_rank(!error.empty())) {
+    // The others wait where this rank will not come: only stopping the run ends it.
+    std::cerr << "volmesh: error: " << error << " (rank " << rank()
+              << " alone; stopping every rank)" << std::endl;
+    MPI_Abort(PETSC_COMM_WORLD, 1);
+  }
   int failed = error.empty() ? ranks() : rank();
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, agreement_comm());
   if (failed == ranks()) return;
   // The failing rank's message to every rank (rank 0 prints it).
   std::vector<char> message(error.begin(), error.end());
-  broadcast_from(message, failed);
+  broadcast_from(message, failed, agreement_comm());
   throw InputError(std::string(message.begin(), message.end()));
 }
 

@@ -118,96 +118,107 @@ Eigen::VectorXd petsc_solve_spd(const OwnedRows& rows, const LinearSolverOptions
   const MPI_Comm comm = rows.distributed ? PETSC_COMM_WORLD : PETSC_COMM_SELF;
   const PetscInt m = static_cast<PetscInt>(rows.rhs.size());
   Owned<Mat, MatDestroy> a;
-  check(MatCreate(comm, &a.object), "matrix");
-  check(MatSetSizes(a.object, m, m, rows.global, rows.global), "matrix sizes");
-  check(MatSetBlockSize(a.object, rows.block_size), "matrix block size");
-  check(MatSetType(a.object, MATAIJ), "matrix type");
-  // The CSR rows give the exact preallocation and the values at once; only the call of the
-  // matrix's own type (one rank: sequential) acts.
-  check(MatSeqAIJSetPreallocationCSR(a.object, rows.offsets.data(), rows.columns.data(),
-                                     rows.values.data()),
-        "matrix values");
-  check(MatMPIAIJSetPreallocationCSR(a.object, rows.offsets.data(), rows.columns.data(),
-                                     rows.values.data()),
-        "matrix values");
-  check(MatSetOption(a.object, MAT_SPD, PETSC_TRUE), "matrix option");
-
   Owned<Vec, VecDestroy> x, b, coordinates;
-  check(MatCreateVecs(a.object, &x.object, &b.object), "vectors");
-  {
-    PetscScalar* v = nullptr;
-    check(VecGetArray(b.object, &v), "right-hand side");
-    for (PetscInt i = 0; i < m; ++i) v[i] = rows.rhs[i];
-    check(VecRestoreArray(b.object, &v), "right-hand side");
-  }
-  if (rows.block_size == 3 && !rows.coordinates.empty()) {
-    check(VecCreateMPI(comm, m, rows.global, &coordinates.object), "coordinates");
-    check(VecSetBlockSize(coordinates.object, 3), "coordinates");
-    PetscScalar* v = nullptr;
-    check(VecGetArray(coordinates.object, &v), "coordinates");
-    for (PetscInt i = 0; i < m; ++i) v[i] = rows.coordinates[i];
-    check(VecRestoreArray(coordinates.object, &v), "coordinates");
-    Owned<MatNullSpace, MatNullSpaceDestroy> rigid;
-    check(MatNullSpaceCreateRigidBody(coordinates.object, &rigid.object), "rigid-body modes");
-    check(MatSetNearNullSpace(a.object, rigid.object), "rigid-body modes");
-  }
-
-  PetscBool hypre = PETSC_FALSE;
-  check(PetscHasExternalPackage("hypre", &hypre), "external packages");
-  if (!hypre)
-    throw std::runtime_error(
-        "this PETSc has no hypre (PCHYPRE not available): install PETSc with hypre "
-        "(Debian: petsc-dev), or choose the Eigen solver (--solver eigen)");
   Owned<KSP, KSPDestroy> ksp;
-  check(KSPCreate(comm, &ksp.object), "solver");
-  check(KSPSetOperators(ksp.object, a.object, a.object), "solver");
-  check(KSPSetType(ksp.object, KSPCG), "solver");
-  // The tolerance means what it means for the Eigen solvers: ‖b − Ax‖ / ‖b‖ from x = 0.
-  check(KSPSetNormType(ksp.object, KSP_NORM_UNPRECONDITIONED), "solver");
-  check(KSPSetTolerances(ksp.object, options.tolerance, 0.0, PETSC_DEFAULT,
-                         options.max_iterations),
-        "solver");
   PC pc = nullptr;
-  check(KSPGetPC(ksp.object, &pc), "preconditioner");
-  {
-    Defaults defaults;
-    set_defaults(defaults, rows.block_size);
-    check(KSPSetFromOptions(ksp.object), "solver options");
-  }
-  const Clock::time_point setting_up = Clock::now();
-  check(KSPSetUp(ksp.object), "preconditioner set-up");
-  check(PCSetUp(pc), "preconditioner set-up");
-  report.preconditioner_seconds =
-      std::chrono::duration<double>(Clock::now() - setting_up).count();
-  const Clock::time_point solving = Clock::now();
-  check(KSPSolve(ksp.object, b.object, x.object), "solve");
-  KSPConvergedReason reason;
-  PetscInt iterations = 0;
-  check(KSPGetConvergedReason(ksp.object, &reason), "solve");
-  check(KSPGetIterationNumber(ksp.object, &iterations), "solve");
-  report.method = method_name(ksp.object, pc);
-  report.iterations = static_cast<int>(iterations);
+  // The matrix, the solver and its set-up: the stage "preconditioner" (fem::stage).
+  stage("preconditioner", [&] {
+    check(MatCreate(comm, &a.object), "matrix");
+    check(MatSetSizes(a.object, m, m, rows.global, rows.global), "matrix sizes");
+    check(MatSetBlockSize(a.object, rows.block_size), "matrix block size");
+    check(MatSetType(a.object, MATAIJ), "matrix type");
+    // The CSR rows give the exact preallocation and the values at once; only the call of the
+    // matrix's own type (one rank: sequential) acts.
+    check(MatSeqAIJSetPreallocationCSR(a.object, rows.offsets.data(), rows.columns.data(),
+                                       rows.values.data()),
+          "matrix values");
+    check(MatMPIAIJSetPreallocationCSR(a.object, rows.offsets.data(), rows.columns.data(),
+                                       rows.values.data()),
+          "matrix values");
+    check(MatSetOption(a.object, MAT_SPD, PETSC_TRUE), "matrix option");
 
-  // The true relative residual, over all ranks.
-  Owned<Vec, VecDestroy> r;
-  check(VecDuplicate(b.object, &r.object), "residual");
-  check(MatMult(a.object, x.object, r.object), "residual");
-  check(VecAYPX(r.object, -1.0, b.object), "residual");
-  PetscReal nr = 0.0, nb = 0.0;
-  check(VecNorm(r.object, NORM_2, &nr), "residual");
-  check(VecNorm(b.object, NORM_2, &nb), "residual");
-  report.residual = nb > 0.0 ? nr / nb : nr;
-  if (reason < 0)
-    throw std::runtime_error(report.method + " did not converge in " +
-                             std::to_string(iterations) + " iterations (relative residual " +
-                             std::to_string(report.residual) + ", " +
-                             KSPConvergedReasons[reason] + ")");
+    check(MatCreateVecs(a.object, &x.object, &b.object), "vectors");
+    {
+      PetscScalar* v = nullptr;
+      check(VecGetArray(b.object, &v), "right-hand side");
+      for (PetscInt i = 0; i < m; ++i) v[i] = rows.rhs[i];
+      check(VecRestoreArray(b.object, &v), "right-hand side");
+    }
+    if (rows.block_size == 3 && !rows.coordinates.empty()) {
+      check(VecCreateMPI(comm, m, rows.global, &coordinates.object), "coordinates");
+      check(VecSetBlockSize(coordinates.object, 3), "coordinates");
+      PetscScalar* v = nullptr;
+      check(VecGetArray(coordinates.object, &v), "coordinates");
+      for (PetscInt i = 0; i < m; ++i) v[i] = rows.coordinates[i];
+      check(VecRestoreArray(coordinates.object, &v), "coordinates");
+      Owned<MatNullSpace, MatNullSpaceDestroy> rigid;
+      check(MatNullSpaceCreateRigidBody(coordinates.object, &rigid.object), "rigid-body modes");
+      check(MatSetNearNullSpace(a.object, rigid.object), "rigid-body modes");
+    }
+
+    PetscBool hypre = PETSC_FALSE;
+    check(PetscHasExternalPackage("hypre", &hypre), "external packages");
+    if (!hypre)
+      throw std::runtime_error(
+          "this PETSc has no hypre (PCHYPRE not available): install PETSc with hypre "
+          "(Debian: petsc-dev), or choose the Eigen solver (--solver eigen)");
+    check(KSPCreate(comm, &ksp.object), "solver");
+    check(KSPSetOperators(ksp.object, a.object, a.object), "solver");
+    check(KSPSetType(ksp.object, KSPCG), "solver");
+    // The tolerance means what it means for the Eigen solvers: ‖b − Ax‖ / ‖b‖ from x = 0.
+    check(KSPSetNormType(ksp.object, KSP_NORM_UNPRECONDITIONED), "solver");
+    check(KSPSetTolerances(ksp.object, options.tolerance, 0.0, PETSC_DEFAULT,
+                           options.max_iterations),
+          "solver");
+    check(KSPGetPC(ksp.object, &pc), "preconditioner");
+    {
+      Defaults defaults;
+      set_defaults(defaults, rows.block_size);
+      check(KSPSetFromOptions(ksp.object), "solver options");
+    }
+    const Clock::time_point setting_up = Clock::now();
+    check(KSPSetUp(ksp.object), "preconditioner set-up");
+    check(PCSetUp(pc), "preconditioner set-up");
+    report.preconditioner_seconds =
+        std::chrono::duration<double>(Clock::now() - setting_up).count();
+  });
+
+  // CG, its outcome and the solution: the stage "solve".
   Eigen::VectorXd out(m);
-  const PetscScalar* v = nullptr;
-  check(VecGetArrayRead(x.object, &v), "solution");
-  for (PetscInt i = 0; i < m; ++i) out[i] = v[i];
-  check(VecRestoreArrayRead(x.object, &v), "solution");
-  report.solve_seconds = std::chrono::duration<double>(Clock::now() - solving).count();
+  stage("solve", [&] {
+    const Clock::time_point solving = Clock::now();
+    // A solve that fails at its iterations (-ksp_error_if_not_converged) says so by the
+    // reason, not by the error code.
+    const PetscErrorCode solved = KSPSolve(ksp.object, b.object, x.object);
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    PetscInt iterations = 0;
+    check(KSPGetConvergedReason(ksp.object, &reason), "solve");
+    check(KSPGetIterationNumber(ksp.object, &iterations), "solve");
+    report.method = method_name(ksp.object, pc);
+    report.iterations = static_cast<int>(iterations);
+    if (reason >= 0) check(solved, "solve");
+
+    // The true relative residual, over all ranks.
+    Owned<Vec, VecDestroy> r;
+    check(VecDuplicate(b.object, &r.object), "residual");
+    check(MatMult(a.object, x.object, r.object), "residual");
+    check(VecAYPX(r.object, -1.0, b.object), "residual");
+    PetscReal nr = 0.0, nb = 0.0;
+    check(VecNorm(r.object, NORM_2, &nr), "residual");
+    check(VecNorm(b.object, NORM_2, &nb), "residual");
+    report.residual = nb > 0.0 ? nr / nb : nr;
+    if (reason < 0)
+      throw std::runtime_error("PETSc: " + report.method + " did not converge in " +
+                               std::to_string(iterations) +
+                               (iterations == 1 ? " iteration" : " iterations") +
+                               " (relative residual " + std::to_string(report.residual) +
+                               "; PETSc's reason: " + KSPConvergedReasons[reason] + ")");
+    const PetscScalar* v = nullptr;
+    check(VecGetArrayRead(x.object, &v), "solution");
+    for (PetscInt i = 0; i < m; ++i) out[i] = v[i];
+    check(VecRestoreArrayRead(x.object, &v), "solution");
+    report.solve_seconds = std::chrono::duration<double>(Clock::now() - solving).count();
+  });
   return out;
 }
 

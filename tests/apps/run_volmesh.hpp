@@ -23,17 +23,21 @@ inline std::string slurp(const std::filesystem::path& p) {
   return ss.str();
 }
 
-// `args` is appended to the binary's path as shell words (callers quote what needs it).
-inline RunResult run_volmesh(const std::string& args, const std::filesystem::path& scratch) {
+// A shell command line, its stdout and stderr captured through files in `scratch`.
+inline RunResult run_captured(const std::string& command, const std::filesystem::path& scratch) {
   const auto out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string cmd = std::string(VOLMESH_BINARY) + " " + args + " >" + out.string() +
-                          " 2>" + err.string() + " </dev/null";
+  const std::string cmd = command + " >" + out.string() + " 2>" + err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+// `args` is appended to the binary's path as shell words (callers quote what needs it).
+inline RunResult run_volmesh(const std::string& args, const std::filesystem::path& scratch) {
+  return run_captured(std::string(VOLMESH_BINARY) + " " + args, scratch);
 }
 
 inline int count_lines(const std::string& s) {

@@ -14,12 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "run_volmesh.hpp"
+#include "run_mpi.hpp"
 
 namespace volmesh {
 namespace {
 
 namespace fs = std::filesystem;
+using test::expect_one_error;
+using test::petsc_built;
+using test::run_mpi;
 using test::run_volmesh;
 
 // The relative tolerance of the solves (LinearSolverOptions::tolerance 1e-10) leaves the
@@ -27,26 +30,6 @@ using test::run_volmesh;
 constexpr double kSolutionAgreement = 1e-7;
 // CG + BoomerAMG's iteration counts over refinement stay within this fraction of their mean.
 constexpr double kFlatIterations = 0.2;
-
-bool petsc_built(const fs::path& dir) {
-  return run_volmesh("--version", dir).out.find("PETSc") != std::string::npos;
-}
-
-// `volmesh args` under mpirun with `ranks` processes (root allowed, more ranks than cores).
-test::RunResult run_mpi(int ranks, const std::string& args, const fs::path& dir) {
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = "mpirun --oversubscribe -np " + std::to_string(ranks) + " " +
-                          std::string(VOLMESH_BINARY) + " " + args + " >" + out.string() +
-                          " 2>" + err.string() + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  test::RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = test::slurp(out);
-  r.err = test::slurp(err);
-  return r;
-}
 
 nlohmann::json compare_files(const fs::path& serial, const fs::path& parallel) {
   const std::string cmd = "/usr/bin/python3 '" + std::string(VOLMESH_TEST_SOURCE) +
@@ -67,17 +50,7 @@ void expect_same_solution(const nlohmann::json& cmp) {
   }
 }
 
-// In the sanitizer build, LeakSanitizer would report what Open MPI and PETSc keep past their
-// finalize calls (in components they unload, whose frames only the slow unwinder sees): those
-// libraries' leaks are suppressed for the processes these tests start. Release builds ignore it.
-class CliDistributed : public ::testing::Test {
- protected:
-  void SetUp() override {
-    setenv("LSAN_OPTIONS",
-           "suppressions=" VOLMESH_TEST_SOURCE "/apps/external/lsan_mpi.supp:fast_unwind_on_malloc=0",
-           1);
-  }
-};
+using CliDistributed = test::MpiTest;
 
 const std::vector<std::string> kCases{
     "poisson --problem sine --method grid --tets --level 3",                   // P1
@@ -216,15 +189,6 @@ TEST_F(CliDistributed, StudySlopeIsTheSameOnTwoRanks) {
     if (slope.is_null()) continue;
     EXPECT_NEAR(slope.get<double>(), b[norm].get<double>(), 1e-6) << norm;
   }
-}
-
-// One line on stderr from rank 0, a non-zero exit, and no hang.
-void expect_one_error(const test::RunResult& r, const std::string& what) {
-  EXPECT_NE(r.exit_code, 0);
-  std::size_t lines = 0, at = 0;
-  while ((at = r.err.find("volmesh: error:", at)) != std::string::npos) ++lines, ++at;
-  EXPECT_EQ(lines, 1u) << r.err;
-  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
 }
 
 TEST_F(CliDistributed, BadSetUpsGiveOneLineOnEveryRankCount) {

@@ -6,8 +6,11 @@
 // PETSc (and MPI) start when the program runs under mpirun, or at the first PETSc solve of a
 // serial run, and stop when the Session ends. PETSc's own options (-ksp_*, -pc_*,
 // -log_view, ...) are taken off the command line by the Session and handed to PETSc's
-// options database, so that they override the backend's defaults.
+// options database, so that they override the backend's defaults. They go at the end of the
+// command line, after the subcommand's own arguments, or after "--".
 #include <cstddef>
+#include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -20,9 +23,12 @@ std::string backend_summary();
 
 class Session {
  public:
-  // Removes PETSc's options from argv (argc shrinks): a word "-name" with a letter after the
-  // single dash and at least two characters (volmesh's own short options are one letter),
-  // with the next word as its value unless that starts with '-' and a letter.
+  // Takes PETSc's options off argv (argc shrinks). A PETSc option is a word "-name" whose
+  // name is letters, digits and underscores with at least one underscore (-ksp_rtol,
+  // -pc_type, -log_view; volmesh's own options are "--name" or one letter). From the first
+  // of them to the end, every word is PETSc's (an option or its value), and so is every word
+  // after "--" (which goes too). An option of volmesh's own among them is not taken:
+  // petsc_options_misplaced() says so.
   Session(int& argc, char** argv);
   ~Session();
   Session(const Session&) = delete;
@@ -31,6 +37,9 @@ class Session {
 
 // PETSc's options given on the command line ("-ksp_rtol 1e-8 ..."), for a re-launch.
 const std::vector<std::string>& petsc_arguments();
+// One line when an option of volmesh's own follows a PETSc option (a usage error, exit 2);
+// empty otherwise.
+const std::string& petsc_options_misplaced();
 
 // Starts PETSc now if this build has it and it has not started (collective under mpirun).
 void start_petsc();
@@ -61,6 +70,43 @@ void barrier();
 // exit together and rank 0 prints it; a rank-0-only stage (meshing) ends with this so that
 // the others do not wait for a broadcast that never comes. Ranks that arrive early sleep in
 // short steps rather than poll a core, so rank 0's serial stages keep a core to themselves.
+// A failed rank whose partners do not arrive within kStrandedSeconds (they wait in a
+// collective of PETSc's that the failure skipped) prints its message with its rank and stops
+// the whole run (MPI_Abort, exit 1): a run never hangs on a failure.
+inline constexpr double kStrandedSeconds = 10.0;
 void agree(const std::string& error);
+
+// A failure a test injects, for the tests only (they check that the ranks fail together in
+// every stage); unset, nothing happens. VOLMESH_TEST_FAIL_STAGE=STAGE@RANK (e.g. "solve@1")
+// makes stage() throw on that rank once STAGE's own work is done; STAGE@RANK:start throws
+// before it, so that the others wait in the stage's collectives (kStrandedSeconds).
+void fail_if_injected(const char* stage, bool at_start);
+
+// Runs one stage of a run (mesh, partition, setup, assembly, preconditioner, solve, errors,
+// write) so that the ranks fail together: when fn throws on any rank (InputError, a PETSc
+// error, bad_alloc), every rank throws InputError with the lowest failing rank's message
+// (agree) and none is left waiting in the next stage's collectives. Every rank calls the same
+// stages in the same order, and the collectives inside fn fail alike on every rank (a
+// solver's convergence, PETSc's options). One rank: fn and its exceptions as they are.
+template <class Fn>
+void stage(const char* name, Fn&& fn) {
+  if (ranks() == 1) {
+    fail_if_injected(name, true);
+    fn();
+    fail_if_injected(name, false);
+    return;
+  }
+  std::string error;
+  try {
+    fail_if_injected(name, true);
+    fn();
+    fail_if_injected(name, false);
+  } catch (const std::bad_alloc&) {
+    error = std::string(name) + ": out of memory";
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  agree(error);
+}
 
 }  // namespace volmesh::fem
