@@ -32,6 +32,28 @@ TEST(HexCornerTets, UnitCubeHasEightCornerSixthsAndTwoInnerThirds) {
   EXPECT_NEAR(std::accumulate(volumes.begin(), volumes.end(), 0.0), 2.0, 1e-15);
 }
 
+// Corner 0 of a cube of side 0.1 moved onto the plane of its three edge neighbours: its corner
+// tet is exactly flat in these doubles, which the doubles' own volume calls positive (by
+// rounding). The exact test refuses the hex; the other nine tets are positive.
+TEST(HexCornerTets, ExactlyFlatCornerTetFailsWhereTheDoublesSayPositive) {
+  std::array<Vec3, 8> hex{Vec3(0.16, 0.11000000000000001, 0.13), Vec3(0.2, 0.1, 0.1),
+                          Vec3(0.2, 0.2, 0.1), Vec3(0.1, 0.2, 0.1), Vec3(0.1, 0.1, 0.2),
+                          Vec3(0.2, 0.1, 0.2), Vec3(0.2, 0.2, 0.2), Vec3(0.1, 0.2, 0.2)};
+  const auto volumes = hex_corner_tet_volumes(hex);
+  EXPECT_GT(volumes[0], 0.0);
+  EXPECT_TRUE(std::all_of(volumes.begin() + 1, volumes.end(), [](double v) { return v > 1e-6; }));
+  EXPECT_FALSE(hex_corner_tets_positive(hex));
+  EXPECT_FALSE(hex_grade(hex).corner_tets_positive);
+  EXPECT_FALSE(hex_quality(hex).corner_tets_positive);
+  // One unit in the last place off the plane, far less than the doubles' rounding of the
+  // volume: valid on the cube's side of it, folded across it.
+  const double z = hex[0].z();
+  hex[0].z() = std::nextafter(z, 0.0);
+  EXPECT_TRUE(hex_corner_tets_positive(hex));
+  hex[0].z() = std::nextafter(z, 1.0);
+  EXPECT_FALSE(hex_corner_tets_positive(hex));
+}
+
 TEST(HexQuality, UnitCubeIsValidWithScaledJacobianOne) {
   const HexQuality q = hex_quality(unit_cube());
   EXPECT_TRUE(q.corner_tets_positive);

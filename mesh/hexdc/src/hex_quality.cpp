@@ -21,8 +21,6 @@ constexpr std::array<std::size_t, 2> kInnerTets{4, 9};
 // The inner tets' edges at their first corner are face diagonals, √2 each, in the unit cube,
 // where 6 V = 2: the normalised volume 2 / (2√2) times √2 is 1.
 constexpr double kInnerTetScale = std::numbers::sqrt2;
-// 6 V of a tet from the triple product of its edges, as tet_volume divides it.
-constexpr double kTetVolumeDivisor = 6.0;
 
 }  // namespace
 
@@ -33,11 +31,6 @@ std::array<double, 10> hex_corner_tet_volumes(const std::array<Vec3, 8>& p) {
     volumes[t] = tet_volume(p[a], p[b], p[c], p[d]);
   }
   return volumes;
-}
-
-bool hex_corner_tets_positive(const std::array<Vec3, 8>& corners) {
-  const auto volumes = hex_corner_tet_volumes(corners);
-  return std::all_of(volumes.begin(), volumes.end(), [](double v) { return v > 0.0; });
 }
 
 std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& q) {
@@ -55,15 +48,7 @@ std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& q) {
 }
 
 HexGrade hex_grade(const std::array<Vec3, 8>& p) {
-  const HexJacobians jacobians = hex_jacobians(p);
-  bool positive = true;
-  for (const double determinant : jacobians.corner_determinants)
-    positive = positive && determinant / kTetVolumeDivisor > 0.0;
-  for (const std::size_t t : kInnerTets) {
-    const auto& [a, b, c, d] = kHexCornerTets[t];
-    positive = positive && tet_volume(p[a], p[b], p[c], p[d]) > 0.0;
-  }
-  return {jacobians.scaled_jacobian, positive};
+  return {hex_scaled_jacobian(p), hex_corner_tets_positive(p)};
 }
 
 double hex_shape_quality(const std::array<Vec3, 8>& p) {

@@ -1,15 +1,14 @@
-// The dual-contouring hex mesher (volmesh/hexdc/dual_contouring.hpp): the domain's signed
-// distances on a (2^dim + 1)^3 grid, contoured at octree level --level, refined locally where
-// asked (refine.hpp), given the buffer layer (pillow.hpp), smoothed (smoothing.hpp, untangle.hpp),
-// its boundary projected onto the domain's surface (project.hpp) and its worst hexes optimised
-// again with the boundary nodes sliding on that surface (untangle.hpp).
+// The dual-contouring hex mesher (volmesh/hexdc/mesher.hpp) on any domain: its options, the
+// domain's signed distances (hexdc_field.hpp) and its true boundary (hexdc_surface.hpp).
 #include <algorithm>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "hexdc_field.hpp"
-#include "hexdc_refine.hpp"
+#include "hexdc_summary.hpp"
 #include "hexdc_surface.hpp"
 #include "registration.hpp"
 #include "volmesh/core/convert.hpp"
@@ -17,12 +16,7 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
-#include "volmesh/hexdc/dual_contouring.hpp"
-#include "volmesh/hexdc/hex_mesh_stats.hpp"
-#include "volmesh/hexdc/pillow.hpp"
-#include "volmesh/hexdc/project.hpp"
-#include "volmesh/hexdc/smoothing.hpp"
-#include "volmesh/hexdc/untangle.hpp"
+#include "volmesh/hexdc/mesher.hpp"
 
 namespace volmesh::meshers {
 
@@ -33,11 +27,9 @@ constexpr int kMinLevel = 2;
 // The default grid has 2^2 voxels per node side: enough crossings for each boundary node's
 // QEF to see the surface's curvature, at 64 samples per node.
 constexpr int kDefaultVoxelsLog2 = 2;
-
-// The hexes whose nodes are optimised again after projection, boundary nodes on the surface: the
-// least scaled Jacobian aimed at for every hex, as ProjectOptions' floor. Fewer hexes than
-// untangle_hexes' default target leave the boundary nodes fewer moves to spend on the rest.
-constexpr double kSurfaceUntangleTarget = 0.3;
+constexpr int kBoxNumbers = 6;
+// The share of the run the signed distances take, before the mesher's stages.
+constexpr double kFieldShare = 0.2;
 
 // k of a signed-distance grid domain whose own samples are a cubic 2^k + 1 grid, 0 for other
 // domains. Throws InputError for a grid of another size when no --dim asks to resample it: the
@@ -58,21 +50,31 @@ int own_depth(const Domain& domain, const MeshRequest& request, bool resample) {
   return k;
 }
 
-// One column of the paper's Table 1: the mesh after a stage, and the stage's time.
-nlohmann::json stage_row(const HexMeshStats& s, double seconds) {
-  nlohmann::json valence = nlohmann::json::object();
-  for (const auto& [hexes, nodes] : s.valence) valence[std::to_string(hexes)] = nodes;
-  return {{"nodes", s.nodes},
-          {"cells", s.cells},
-          {"max_edge", s.max_edge},
-          {"min_edge", s.min_edge},
-          {"max_aspect_ratio", s.max_aspect_ratio},
-          {"max_quad_distortion_deg", s.max_quad_distortion_deg},
-          {"degenerate_hexes", s.degenerate},
-          {"valence", valence},
-          {"min_scaled_jacobian", s.min_scaled_jacobian},
-          {"mean_scaled_jacobian", s.mean_scaled_jacobian},
-          {"seconds", seconds}};
+Eigen::AlignedBox3d parse_box(const std::string& text) {
+  const std::string error = "hexdc: --refine-box " + text +
+                            ": not six numbers x0,y0,z0,x1,y1,z1 with x0 < x1, y0 < y1, z0 < z1";
+  std::vector<double> v;
+  std::istringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    std::size_t used = 0;
+    try {
+      v.push_back(std::stod(item, &used));
+    } catch (const std::exception&) {
+      throw InputError(error);
+    }
+    if (used != item.size()) throw InputError(error);
+  }
+  if (v.size() != kBoxNumbers) throw InputError(error);
+  const Vec3 lo(v[0], v[1], v[2]), hi(v[3], v[4], v[5]);
+  if (!(lo.array() < hi.array()).all()) throw InputError(error);
+  return {lo, hi};
+}
+
+HexdcRefinement refinement_of(const MethodOptions& options) {
+  HexdcRefinement r;
+  r.boundary_layers = static_cast<int>(given<std::int64_t>(options, "refine-boundary").value_or(0));
+  if (const auto box = given<std::string>(options, "refine-box")) r.box = parse_box(*box);
+  return r;
 }
 
 MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
@@ -89,116 +91,25 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                      request.domain_name + " allows: " + std::to_string((Index{1} << depth) + 1) +
                      " samples per axis (k = " + std::to_string(depth) +
                      ") give at most --level " + std::to_string(depth));
+  const HexdcOptions options{.level = level,
+                             .refinement = refinement_of(request.options),
+                             .source = request.domain_name,
+                             .progress = part_of(request.progress, kFieldShare, 1.0)};
 
-  const HexdcRefinement refinement = hexdc_refinement(request.options);
-  const auto progress = [&](const char* stage, double fraction) {
-    if (request.progress) request.progress(stage, fraction);
-  };
-
-  progress("signed distances", 0.0);
+  report(request.progress, "signed distances", 0.0);
   const Clock::time_point sampling = Clock::now();
   const std::shared_ptr<const SignedDistance> outer = outer_surface_distance(domain);
   const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level), outer.get());
   const double field_seconds = seconds_since(sampling);
-  if (std::none_of(field.values.begin(), field.values.end(), [](float v) { return v >= 0.0F; }))
-    throw InputError(request.domain_name +
-                     ": no sample of the signed distance is >= 0: nothing is inside");
 
-  progress("dual contouring", 0.2);
-  const Clock::time_point contouring = Clock::now();
-  HexdcStats stats;
-  HexMesh hexes = to_hex_mesh(hexdc_uniform(field, level, &stats));
-  const double contour_seconds = seconds_since(contouring);
-  const HexMeshStats uniform = hex_mesh_stats(hexes);
-
-  progress("refinement", 0.3);
-  const Clock::time_point refining = Clock::now();
-  const RefineStats refined = refine_hexdc(hexes, refinement);
-  const double refine_seconds = seconds_since(refining);
-  const HexMeshStats after_refinement =
-      refined.hexes_after != refined.hexes_before ? hex_mesh_stats(hexes) : HexMeshStats{};
-
-  // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
-  // hexes it left failing, now that they are interior.
-  progress("buffer layer", 0.35);
-  const Clock::time_point improving = Clock::now();
-  const PillowStats pillow = pillow_boundary(hexes);
-  progress("smoothing", 0.4);
-  const SmoothingStats smoothing = smooth_hexes(hexes);
-  progress("untangling", 0.55);
-  const UntangleStats untangling = untangle_hexes(hexes);
-  const double improve_seconds = seconds_since(improving);
-
-  // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
-  // nodes onto their features.
-  progress("projection", 0.65);
-  const Clock::time_point projecting = Clock::now();
-  const SurfaceProjector surface = hexdc_surface(domain, outer);
-  const ProjectStats projection = project_boundary(hexes, surface);
-  progress("untangling on the surface", 0.85);
-  // Projection fixes the buffer hexes' outer quads where it put them: the worst hexes are
-  // optimised again with the boundary nodes free to slide on the surface.
-  const UntangleStats surface_untangling =
-      untangle_hexes(hexes, {.target_quality = kSurfaceUntangleTarget}, surface);
-  const double project_seconds = seconds_since(projecting);
-
-  // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
-  progress("corner tets", 0.95);
-  const HexMeshStats improved = hex_mesh_stats(hexes);
-  if (improved.degenerate > 0) {
-    const Vec3& c = improved.first_degenerate_centre;
-    std::ostringstream where;
-    where << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
-    throw InputError("hexdc: " + std::to_string(improved.degenerate) + " of " +
-                     std::to_string(improved.cells) + " hexes of " + request.domain_name +
-                     " fail the ten corner tets, the first cell " +
-                     std::to_string(improved.first_degenerate) + " at " + where.str());
-  }
+  const HexdcResult hexes = hexdc_mesh(field, hexdc_surface(domain, outer), options);
   MeshResult r;
-  r.mesh = to_poly_mesh(hexes);
+  r.mesh = to_poly_mesh(hexes.mesh);
   r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
-  r.summary = {{"nodes_per_axis", stats.nodes_per_axis},
-               {"samples_per_axis", field.dims[0]},
-               {"voxel_size", field.spacing.x()},
-               {"field_seconds", field_seconds},
-               {"interior_vertices", stats.interior_vertices},
-               {"boundary_vertices", stats.boundary_vertices},
-               {"qef_fallbacks", stats.qef_fallbacks},
-               {"pillow",
-                {{"copies", pillow.boundary_nodes},
-                 {"hexes", pillow.pillow_hexes},
-                 {"shrunk_copies", pillow.shrunk_copies},
-                 {"two_boundary_faces_before", pillow.multi_boundary_hexes_before},
-                 {"two_boundary_faces_after", pillow.multi_boundary_hexes_after},
-                 {"degenerate_after", pillow.invalid_hexes_after}}},
-               {"smoothing",
-                {{"sweeps", smoothing.sweeps}, {"moves", smoothing.moves_accepted}}},
-               {"untangling",
-                {{"sweeps", untangling.sweeps},
-                 {"moves", untangling.moves_accepted},
-                 {"degenerate_before", untangling.invalid_hexes_before},
-                 {"degenerate_after", untangling.invalid_hexes_after},
-                 {"on_surface_sweeps", surface_untangling.sweeps},
-                 {"on_surface_moves", surface_untangling.moves_accepted},
-                 {"on_surface_features_released", surface_untangling.features_released},
-                 {"on_surface_degenerate_after", surface_untangling.invalid_hexes_after}}},
-               {"refinement", refinement_summary(refined)},
-               {"projection",
-                {{"nodes_projected", projection.projected},
-                 {"nodes_kept_on_features", projection.feature_nodes},
-                 {"nodes_held_back", projection.held_back},
-                 {"max_distance_before", projection.max_distance_before},
-                 {"max_distance_left", projection.max_distance_left},
-                 {"max_feature_distance", projection.max_feature_distance},
-                 {"min_scaled_jacobian_before", projection.min_scaled_jacobian_before},
-                 {"min_scaled_jacobian_after", projection.min_scaled_jacobian_after},
-                 {"seconds", project_seconds}}}};
-  // The paper's Table 1 columns: uniform, refined (when asked), improved.
-  nlohmann::json& stages = r.summary["stages"];
-  stages["uniform"] = stage_row(uniform, contour_seconds);
-  if (refined.hexes_after != refined.hexes_before)
-    stages["refined"] = stage_row(after_refinement, refine_seconds);
-  stages["improved"] = stage_row(improved, improve_seconds + project_seconds);
+  r.summary = hexdc_summary(hexes);
+  r.summary["samples_per_axis"] = field.dims[0];
+  r.summary["voxel_size"] = field.spacing.x();
+  r.summary["field_seconds"] = field_seconds;
   return r;
 }
 

@@ -28,7 +28,8 @@ inline constexpr std::array<std::array<int, 4>, 10> kHexCornerTets{{{0, 1, 3, 4}
 // Signed volumes of the ten tets of kHexCornerTets.
 std::array<double, 10> hex_corner_tet_volumes(const std::array<Vec3, 8>& corners);
 
-// The paper's non-degeneracy test: every one of the ten tets has a positive volume.
+// The paper's non-degeneracy test: every one of the ten tets has a positive volume, each sign
+// decided exactly (CGAL's orientation predicate on the corners as given).
 bool hex_corner_tets_positive(const std::array<Vec3, 8>& corners);
 
 // Interior angles of a quad, in degrees, in [0, 360): at corner k the angle from the edge to
@@ -37,9 +38,7 @@ bool hex_corner_tets_positive(const std::array<Vec3, 8>& corners);
 // A non-planar quad's angles are those of its edges as they are, not projected.
 std::array<double, 4> quad_interior_angles_deg(const std::array<Vec3, 4>& quad);
 
-// What smoothing and projection judge a move by, from one pass over the corners (the eight
-// corner tets of kHexCornerTets are the corner Jacobians of the scaled Jacobian, so they are
-// computed once for both).
+// What smoothing and projection judge a move by.
 struct HexGrade {
   double scaled_jacobian = 0.0;       // hex_scaled_jacobian
   bool corner_tets_positive = false;  // hex_corner_tets_positive

@@ -1,0 +1,71 @@
+#pragma once
+// The dual-contouring hex mesher as one call: a sampled signed-distance field (positive
+// inside) and the closest-point map of the surface it stands for in, a valid hex mesh out.
+// The stages, in order:
+//   contour (dual_contouring.hpp) at octree level `level`;
+//   refine (refine.hpp) the marked nodes: the boundary layers and the box asked for;
+//   pillow (pillow.hpp): the buffer layer, so that no hex keeps two boundary faces;
+//   smooth (smoothing.hpp) and untangle (untangle.hpp) with the boundary fixed;
+//   project (project.hpp) the boundary nodes onto the surface;
+//   untangle again, the boundary nodes sliding on the surface.
+// Every hex of the result passes the ten corner tets; a mesh with one failing is refused.
+#include <optional>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/progress.hpp"
+#include "volmesh/core/voxel_grid.hpp"
+#include "volmesh/hexdc/dual_contouring.hpp"
+#include "volmesh/hexdc/hex_mesh_stats.hpp"
+#include "volmesh/hexdc/pillow.hpp"
+#include "volmesh/hexdc/project.hpp"
+#include "volmesh/hexdc/refine.hpp"
+#include "volmesh/hexdc/smoothing.hpp"
+#include "volmesh/hexdc/surface_projector.hpp"
+#include "volmesh/hexdc/untangle.hpp"
+
+namespace volmesh {
+
+// The deepest boundary refinement: each layer multiplies the hexes near the surface by 27.
+inline constexpr int kMaxRefineLayers = 4;
+
+// Which nodes are refined before the buffer layer (either may be empty).
+struct HexdcRefinement {
+  int boundary_layers = 0;  // mark_boundary_layers, at most kMaxRefineLayers
+  std::optional<Eigen::AlignedBox3d> box;  // mark_box
+};
+
+struct HexdcOptions {
+  int level = 0;  // the octree level contoured, in [1, k] for a (2^k + 1)^3 field
+  HexdcRefinement refinement;
+  std::string source;  // names the field in messages (a file name, "builtin:ball")
+  Progress progress;   // the stages, from the calling thread
+};
+
+struct HexdcResult {
+  HexMesh mesh;
+  HexdcStats contouring;
+  RefineStats refinement;
+  PillowStats pillow;
+  SmoothingStats smoothing;
+  UntangleStats untangling;          // with the boundary fixed
+  ProjectStats projection;
+  UntangleStats surface_untangling;  // with the boundary nodes on the surface
+  // The paper's Table 1 columns: the uniform mesh, the refined one (set when the refinement
+  // changed the mesh) and the final one.
+  HexMeshStats uniform, improved;
+  std::optional<HexMeshStats> refined;
+  double contour_seconds = 0.0, refine_seconds = 0.0;
+  double improve_seconds = 0.0;  // buffer layer, smoothing and untangling
+  double project_seconds = 0.0;  // projection and untangling on the surface
+};
+
+// Throws InputError (naming options.source) when no sample is >= 0, for a level outside
+// [1, k] or boundary layers outside [0, kMaxRefineLayers], and when a hex of the final mesh
+// fails the ten corner tets.
+HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
+                       const HexdcOptions& options);
+
+}  // namespace volmesh

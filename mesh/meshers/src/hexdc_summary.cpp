@@ -1,0 +1,88 @@
+#include "hexdc_summary.hpp"
+
+#include <string>
+
+namespace volmesh::meshers {
+namespace {
+
+// One column of the paper's Table 1: the mesh after a stage, and the stage's time.
+nlohmann::json stage_row(const HexMeshStats& s, double seconds) {
+  nlohmann::json valence = nlohmann::json::object();
+  for (const auto& [hexes, nodes] : s.valence) valence[std::to_string(hexes)] = nodes;
+  return {{"nodes", s.nodes},
+          {"cells", s.cells},
+          {"max_edge", s.max_edge},
+          {"min_edge", s.min_edge},
+          {"max_aspect_ratio", s.max_aspect_ratio},
+          {"max_quad_distortion_deg", s.max_quad_distortion_deg},
+          {"degenerate_hexes", s.degenerate},
+          {"valence", valence},
+          {"min_scaled_jacobian", s.min_scaled_jacobian},
+          {"mean_scaled_jacobian", s.mean_scaled_jacobian},
+          {"seconds", seconds}};
+}
+
+nlohmann::json refinement_summary(const RefineStats& stats) {
+  const auto by_case = [&](RefineCase c) { return stats.hexes_by_case[static_cast<std::size_t>(c)]; };
+  return {{"hexes_before", stats.hexes_before},
+          {"hexes_after", stats.hexes_after},
+          {"nodes_before", stats.nodes_before},
+          {"nodes_after", stats.nodes_after},
+          {"marked_nodes", stats.marked_given},
+          {"marked_nodes_after_closure", stats.marked_after_closure},
+          {"closure_passes", stats.closure_passes},
+          {"hexes_by_template",
+           {{"none", by_case(RefineCase::none)},
+            {"node", by_case(RefineCase::node)},
+            {"edge", by_case(RefineCase::edge)},
+            {"face", by_case(RefineCase::face)},
+            {"full", by_case(RefineCase::full)}}}};
+}
+
+}  // namespace
+
+nlohmann::json hexdc_summary(const HexdcResult& r) {
+  const PillowStats& pillow = r.pillow;
+  const ProjectStats& projection = r.projection;
+  nlohmann::json summary = {
+      {"nodes_per_axis", r.contouring.nodes_per_axis},
+      {"interior_vertices", r.contouring.interior_vertices},
+      {"boundary_vertices", r.contouring.boundary_vertices},
+      {"qef_fallbacks", r.contouring.qef_fallbacks},
+      {"pillow",
+       {{"copies", pillow.boundary_nodes},
+        {"hexes", pillow.pillow_hexes},
+        {"shrunk_copies", pillow.shrunk_copies},
+        {"two_boundary_faces_before", pillow.multi_boundary_hexes_before},
+        {"two_boundary_faces_after", pillow.multi_boundary_hexes_after},
+        {"degenerate_after", pillow.invalid_hexes_after}}},
+      {"smoothing", {{"sweeps", r.smoothing.sweeps}, {"moves", r.smoothing.moves_accepted}}},
+      {"untangling",
+       {{"sweeps", r.untangling.sweeps},
+        {"moves", r.untangling.moves_accepted},
+        {"degenerate_before", r.untangling.invalid_hexes_before},
+        {"degenerate_after", r.untangling.invalid_hexes_after},
+        {"on_surface_sweeps", r.surface_untangling.sweeps},
+        {"on_surface_moves", r.surface_untangling.moves_accepted},
+        {"on_surface_features_released", r.surface_untangling.features_released},
+        {"on_surface_degenerate_after", r.surface_untangling.invalid_hexes_after}}},
+      {"refinement", refinement_summary(r.refinement)},
+      {"projection",
+       {{"nodes_projected", projection.projected},
+        {"nodes_kept_on_features", projection.feature_nodes},
+        {"nodes_held_back", projection.held_back},
+        {"max_distance_before", projection.max_distance_before},
+        {"max_distance_left", projection.max_distance_left},
+        {"max_feature_distance", projection.max_feature_distance},
+        {"min_scaled_jacobian_before", projection.min_scaled_jacobian_before},
+        {"min_scaled_jacobian_after", projection.min_scaled_jacobian_after},
+        {"seconds", r.project_seconds}}}};
+  // The paper's Table 1 columns: uniform, refined (when asked), improved.
+  nlohmann::json& stages = summary["stages"];
+  stages["uniform"] = stage_row(r.uniform, r.contour_seconds);
+  if (r.refined) stages["refined"] = stage_row(*r.refined, r.refine_seconds);
+  stages["improved"] = stage_row(r.improved, r.improve_seconds + r.project_seconds);
+  return summary;
+}
+
+}  // namespace volmesh::meshers
