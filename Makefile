@@ -16,7 +16,7 @@ TEST_PACKAGES := python3 python3-meshio python3-vtk9 gmsh openfoam libcgal-demo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 missing = $(shell for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done)
 
-.PHONY: demo test test-sanitize build deps-build deps-test clean
+.PHONY: demo test test-sanitize build build-sanitize deps-build deps-test clean
 
 deps-build:
 	@m="$(call missing,$(BUILD_PACKAGES))"; if [ -n "$$m" ]; then \
@@ -40,10 +40,12 @@ test: deps-test build
 
 # The unit tests once more under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
 # after `make test`); any report fails the run.
-test-sanitize: deps-test
+build-sanitize: deps-build
 	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DVOLMESH_SANITIZE=ON \
 	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
+
+test-sanitize: deps-test build-sanitize
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -L unit
 
