@@ -39,11 +39,12 @@ test: deps-test build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # The unit tests once more under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
-# after `make test`); any report fails the run.
+# after `make test`); any report fails the run. Its tree builds only the `unit` tests'
+# executables and what they link or run (the volmesh binary, for the command-line tests).
 build-sanitize: deps-build
 	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DVOLMESH_SANITIZE=ON \
 	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
-	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cmake --build $(ASAN_BUILD) -j $(JOBS) --target tests_unit
 
 test-sanitize: deps-test build-sanitize
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
