@@ -24,11 +24,6 @@ inline double feature_cosine(const char* stage, double degrees) {
   return std::cos(degrees * std::numbers::pi / 180.0);
 }
 
-// The twelve edges of a hex in VTK corners.
-inline constexpr std::array<std::array<int, 2>, 12> kHexEdges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
-                                                               {4, 5}, {5, 6}, {6, 7}, {7, 4},
-                                                               {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
-
 inline std::array<Vec3, 8> hex_corners(const HexMesh& mesh, Index h) {
   std::array<Vec3, 8> corners;
   const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
