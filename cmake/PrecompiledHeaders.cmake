@@ -1,0 +1,52 @@
+# Precompiled headers for cold builds (VOLMESH_PCH): the headers nearly every translation unit
+# parses, compiled once per group of targets whose flags match, each group's first target
+# owning the precompiled header and the others reusing it. Groups: the test programs
+# (GoogleTest added), the targets compiled with CGAL's flags (-frounding-math), the rest.
+# CGAL's own headers stay out: the few files that include them gain less than the others,
+# which would load them too, lose. Off by default: a precompiled header differs byte for byte
+# from one build tree to the next, so ccache cannot share the objects that use it between trees.
+
+set(VOLMESH_PCH_COMMON <algorithm> <array> <cmath> <cstdint> <functional> <limits> <map>
+  <memory> <optional> <span> <stdexcept> <string> <string_view> <utility> <vector>
+  <Eigen/Core> <Eigen/Geometry>)
+set(VOLMESH_PCH_EXTRA_tests <gtest/gtest.h>)
+
+# The C++ targets defined in dir and below.
+function(_volmesh_cxx_targets dir out)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  set(result)
+  foreach(target IN LISTS targets)
+    get_target_property(type ${target} TYPE)
+    if(type MATCHES "^(STATIC_LIBRARY|OBJECT_LIBRARY|EXECUTABLE)$")
+      list(APPEND result ${target})
+    endif()
+  endforeach()
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(subdir IN LISTS subdirs)
+    _volmesh_cxx_targets(${subdir} below)
+    list(APPEND result ${below})
+  endforeach()
+  set(${out} ${result} PARENT_SCOPE)
+endfunction()
+
+# Gives every C++ target of the project a precompiled header; call after all targets exist.
+function(volmesh_precompile_headers)
+  _volmesh_cxx_targets(${PROJECT_SOURCE_DIR} targets)
+  foreach(target IN LISTS targets)
+    get_target_property(source_dir ${target} SOURCE_DIR)
+    get_target_property(links ${target} LINK_LIBRARIES)
+    if(source_dir MATCHES "^${PROJECT_SOURCE_DIR}/tests(/|$)")
+      set(group tests)
+    elseif("CGAL::CGAL" IN_LIST links)
+      set(group cgal)
+    else()
+      set(group plain)
+    endif()
+    if(DEFINED _owner_${group})
+      target_precompile_headers(${target} REUSE_FROM ${_owner_${group}})
+    else()
+      set(_owner_${group} ${target})
+      target_precompile_headers(${target} PRIVATE ${VOLMESH_PCH_COMMON} ${VOLMESH_PCH_EXTRA_${group}})
+    endif()
+  endforeach()
+endfunction()
