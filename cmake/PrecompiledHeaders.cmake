@@ -1,7 +1,9 @@
 # Precompiled headers for cold builds (VOLMESH_PCH): the headers nearly every translation unit
-# parses, compiled once per group of targets whose flags match, each group's first target
-# owning the precompiled header and the others reusing it. Groups: the test programs
-# (GoogleTest added), the targets compiled with CGAL's flags (-frounding-math), the rest.
+# parses, compiled once per group of targets whose flags match, by an empty target of the
+# group's own that links only what the headers need (GCC refuses a precompiled header built
+# with a macro the user lacks, such as TBB's TBB_USE_DEBUG in Debug), the others reusing it.
+# Groups: the test programs (GoogleTest added), the targets compiled with CGAL's flags
+# (-frounding-math), the rest.
 # CGAL's own headers stay out: the few files that include them gain less than the others,
 # which would load them too, lose. Off by default: a precompiled header differs byte for byte
 # from one build tree to the next, so ccache cannot share the objects that use it between trees.
@@ -10,6 +12,9 @@ set(VOLMESH_PCH_COMMON <algorithm> <array> <cmath> <cstdint> <functional> <limit
   <memory> <optional> <span> <stdexcept> <string> <string_view> <utility> <vector>
   <Eigen/Core> <Eigen/Geometry>)
 set(VOLMESH_PCH_EXTRA_tests <gtest/gtest.h>)
+set(VOLMESH_PCH_LINK_plain Eigen3::Eigen)
+set(VOLMESH_PCH_LINK_cgal Eigen3::Eigen CGAL::CGAL)
+set(VOLMESH_PCH_LINK_tests Eigen3::Eigen GTest::gtest)
 
 # The C++ targets defined in dir and below.
 function(_volmesh_cxx_targets dir out)
@@ -42,11 +47,14 @@ function(volmesh_precompile_headers)
     else()
       set(group plain)
     endif()
-    if(DEFINED _owner_${group})
-      target_precompile_headers(${target} REUSE_FROM ${_owner_${group}})
-    else()
-      set(_owner_${group} ${target})
-      target_precompile_headers(${target} PRIVATE ${VOLMESH_PCH_COMMON} ${VOLMESH_PCH_EXTRA_${group}})
+    set(owner volmesh_pch_${group})
+    if(NOT TARGET ${owner})
+      set(source ${PROJECT_BINARY_DIR}/${owner}.cpp)
+      file(CONFIGURE OUTPUT ${source} CONTENT "")
+      add_library(${owner} OBJECT EXCLUDE_FROM_ALL ${source})
+      target_link_libraries(${owner} PRIVATE ${VOLMESH_PCH_LINK_${group}})
+      target_precompile_headers(${owner} PRIVATE ${VOLMESH_PCH_COMMON} ${VOLMESH_PCH_EXTRA_${group}})
     endif()
+    target_precompile_headers(${target} REUSE_FROM ${owner})
   endforeach()
 endfunction()
