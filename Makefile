@@ -4,7 +4,7 @@ SHELL := /bin/bash
 BUILD := build/release
 ASAN_BUILD := build/asan
 JOBS ?= $(shell nproc)
-# PCH=ON (CI sets it) precompiles the headers most files parse: a cold build takes far less
+# PCH=ON precompiles the headers most files parse: a cold build takes far less
 # CPU, but ccache cannot share those objects between build trees. Unset, a tree keeps its
 # setting (off when first configured).
 PCH ?=
