@@ -80,9 +80,11 @@ DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOpt
 
   Forest forest(std::max(std::min(options.base_level, options.level), 0));
   p8est_t* p = forest.get();
-  InterfaceQuery query(frame, domain);
   DistributedOctreeStats& st = out.stats;
-  st.refinement_rounds += refine_toward_interfaces(p, query, options.level);
+  {
+    InterfaceQuery query(frame, domain);
+    st.refinement_rounds += refine_toward_interfaces(p, query, options.level);
+  }
   for (const BoxFront& f : options.boxes) st.refinement_rounds += refine_into_box(p, frame, f);
   for (const SurfaceFront& f : options.surfaces) {
     forget_states(p);
@@ -92,7 +94,10 @@ DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOpt
   if (!options.surfaces.empty()) forget_states(p);
   st.graded_levels = grade_rounds(p, options.cells_between_levels);
 
-  classify_leaves(p, query);
+  {  // the regions of the stages before are mostly of nodes split since
+    InterfaceQuery query(frame, domain);
+    classify_leaves(p, query);
+  }
   p8est_partition(p, 0, weigh_by_cut);
   out.rank = p->mpirank;
   out.ranks = p->mpisize;

@@ -12,22 +12,12 @@ Index InterfaceQuery::region(const GridPoint& p) {
   return r;
 }
 
-bool InterfaceQuery::edge_crossed(const GridPoint& lo, const GridPoint& hi) {
-  const std::uint64_t code = morton_encode({(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2});
-  Index crossed = crossed_.find(code);
-  if (crossed == kNoIndex) {
-    crossed = domain_.crossings(frame_.world(lo), frame_.world(hi)).empty() ? 0 : 1;
-    crossed_.insert(code, crossed);
-  }
-  return crossed != 0;
-}
-
 bool InterfaceQuery::on_interface(const OctreeLeaf& leaf) {
   const Index first = region(leaf.corner(0));
   for (int k = 1; k < 8; ++k)
     if (region(leaf.corner(k)) != first) return true;
   for (const auto& [a, b] : kEdgeCorners)
-    if (edge_crossed(leaf.corner(a), leaf.corner(b))) return true;
+    if (!domain_.crossings(frame_.world(leaf.corner(a)), frame_.world(leaf.corner(b))).empty()) return true;
   return false;
 }
 

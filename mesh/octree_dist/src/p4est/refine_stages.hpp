@@ -10,7 +10,8 @@ namespace volmesh::octree_dist {
 
 // build_octree's interface criterion (refine_toward): a leaf's corners lie in different
 // regions of the domain or one of its edges is crossed (or touched) by an interface. The
-// regions and edge verdicts met are remembered: neighbours share corners and edges.
+// regions met are remembered, as eight leaves share a corner; edge verdicts are not: at four
+// leaves to an edge they would take most of a rank's memory for few queries saved.
 class InterfaceQuery {
  public:
   // `frame`: a tree with the octree's root cube, for world coordinates.
@@ -19,12 +20,10 @@ class InterfaceQuery {
 
  private:
   Index region(const GridPoint& p);
-  bool edge_crossed(const GridPoint& lo, const GridPoint& hi);
 
   const Octree& frame_;
   const Domain& domain_;
   KeyMap regions_;  // by the point's Morton code
-  KeyMap crossed_;  // by the Morton code of the edge's midpoint: 1 crossed, 0 not
 };
 
 // Splits leaves below `level` that the query puts on an interface, keeping the forest
