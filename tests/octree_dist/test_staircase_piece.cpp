@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gather.hpp"
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/open_domain.hpp"
@@ -15,20 +16,6 @@
 
 namespace volmesh {
 namespace {
-
-// Every rank's values, concatenated in rank order, on every rank.
-template <class T>
-std::vector<T> gather(const std::vector<T>& mine, MPI_Datatype type) {
-  int ranks = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(ranks), offsets(ranks + 1, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<T> all(offsets[ranks]);
-  MPI_Allgatherv(mine.data(), count, type, all.data(), counts.data(), offsets.data(), type, MPI_COMM_WORLD);
-  return all;
-}
 
 struct Case {
   std::string domain;
@@ -70,7 +57,7 @@ TEST(StaircasePiece, PiecesMakeTheSerialMesh) {
     for (Index k = 0; k < piece.mesh.num_cells(); ++k)
       cells.insert(cells.end(), {static_cast<double>(piece.global_cells[k]), static_cast<double>(piece.mesh.cell_region[k]),
                                  geometry.cells[k].volume});
-    const std::vector<double> all_cells = gather(cells, MPI_DOUBLE);
+    const std::vector<double> all_cells = test::gather_to_all(cells, MPI_DOUBLE);
     ASSERT_EQ(all_cells.size(), 3u * serial.num_cells());
     const MeshGeometry serial_geometry = mesh_geometry(serial, build_cell_faces(serial));
     int wrong = 0;
@@ -87,7 +74,7 @@ TEST(StaircasePiece, PiecesMakeTheSerialMesh) {
     for (Index p = 0; p < piece.mesh.num_points(); ++p)
       points.insert(points.end(), {static_cast<double>(piece.global_points[p]), piece.mesh.points[p].x(),
                                    piece.mesh.points[p].y(), piece.mesh.points[p].z()});
-    const std::vector<double> all_points = gather(points, MPI_DOUBLE);
+    const std::vector<double> all_points = test::gather_to_all(points, MPI_DOUBLE);
     std::vector<Vec3> at(serial.num_points(), Vec3::Constant(std::nan("")));
     int clashes = 0;
     for (std::size_t k = 0; k < all_points.size(); k += 4) {
