@@ -13,7 +13,7 @@ CMAKE_OPTIONS := $(if $(PCH),-DVOLMESH_PCH=$(PCH))
 BUILD_PACKAGES := cmake ninja-build g++ ccache pkg-config libeigen3-dev libcgal-dev libgmp-dev \
   libmpfr-dev libvtk9-dev libmetis-dev libgtest-dev libcli11-dev nlohmann-json3-dev \
   libtbb-dev zlib1g-dev libmuparser-dev libgd-dev petsc-dev libhypre-dev openmpi-bin \
-  libopenmpi-dev
+  libopenmpi-dev libp4est-dev
 # Third-party readers the round-trip tests check our output with (VTK's parallel reader for
 # the distributed solve's PVTU), and the test surfaces.
 TEST_PACKAGES := python3 python3-meshio python3-vtk9 gmsh openfoam libcgal-demo

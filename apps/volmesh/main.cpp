@@ -10,6 +10,7 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/fem/parallel.hpp"
 #include "volmesh/meshers/registry.hpp"
+#include "volmesh/octree_dist/distributed_octree.hpp"
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -54,7 +55,8 @@ int main(int argc, char** argv) {
   CLI::App app{"volmesh — volume meshing (" + meshers::mesher_names() +
                "), checking, partitioning, Poisson and elasticity solves, export"};
   app.set_version_flag("--version",
-                       std::string("volmesh ") + VOLMESH_VERSION + "\n" + fem::backend_summary());
+                       std::string("volmesh ") + VOLMESH_VERSION + "\n" + fem::backend_summary() + "\n" +
+                           distributed_octree_summary());
   app.require_subcommand(1);
   std::vector<cli::Command> commands{
       cli::add_info_command(app),      cli::add_convert_command(app), cli::add_check_command(app),

@@ -20,6 +20,10 @@ TEST(Cli, VersionAndUsage) {
   const auto v = run_volmesh("--version", dir);
   EXPECT_EQ(v.exit_code, 0);
   EXPECT_NE(v.out.find("volmesh"), std::string::npos);
+  // Whether the distributed octree is built in: p4est's version, or that it is not.
+  EXPECT_TRUE(v.out.find("\ndistributed octree: p4est 2.") != std::string::npos ||
+              v.out.find("\ndistributed octree: built without p4est") != std::string::npos)
+      << v.out;
   EXPECT_EQ(run_volmesh("", dir).exit_code, 2);
   EXPECT_EQ(run_volmesh("check", dir).exit_code, 2);
   EXPECT_EQ(run_volmesh("info x.off --no-such-flag", dir).exit_code, 2);

@@ -10,28 +10,23 @@
 #include <vector>
 
 #include "volmesh/core/errors.hpp"
+#include "volmesh/octree/grade_steps.hpp"
 #include "volmesh/octree/key_map.hpp"
 #include "volmesh/octree/octree.hpp"
 
 namespace volmesh {
 
-namespace {
-
-// The level-l cells (by the Morton code of their anchor) that leaves of level l or finer
-// cover, sorted.
-std::vector<std::uint64_t> covered_cells(const Octree& tree, int level) {
+std::vector<std::uint64_t> grade_covered_cells(std::span<const OctreeLeaf> leaves, int level) {
   const std::uint32_t mask = ~((kOctreeGrid >> level) - 1);
   std::vector<std::uint64_t> cells;
-  for (const OctreeLeaf& leaf : tree.leaves())
+  for (const OctreeLeaf& leaf : leaves)
     if (leaf.level >= level)
       cells.push_back(morton_encode({leaf.anchor[0] & mask, leaf.anchor[1] & mask, leaf.anchor[2] & mask}));
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());  // Morton order already
   return cells;
 }
 
-// The centres of the level-l cells within `reach` cells of a covered one (a box of
-// 2 reach + 1 cells around it) and not covered themselves: the buffer to refine.
-std::vector<GridPoint> buffer_centres(const std::vector<std::uint64_t>& covered, int level, int reach) {
+std::vector<GridPoint> grade_buffer_centres(const std::vector<std::uint64_t>& covered, int level, int reach) {
   const std::int64_t size = kOctreeGrid >> level;
   KeyMap is_covered(covered.size());  // one probe per neighbour instead of a binary search
   for (const std::uint64_t c : covered) is_covered.insert(c, 0);
@@ -62,8 +57,6 @@ std::vector<GridPoint> buffer_centres(const std::vector<std::uint64_t>& covered,
   return centres;
 }
 
-}  // namespace
-
 void grade(Octree& tree, int cells_between_levels) {
   if (cells_between_levels < 1)
     throw InputError("--cells-between-levels must be at least 1");
@@ -72,7 +65,7 @@ void grade(Octree& tree, int cells_between_levels) {
   for (int level = tree.max_leaf_level(); level >= 2; --level) {
     // The buffer is fixed before splitting: leaves it creates do not widen it in turn. A
     // centre once in a leaf of the level stays so (splits only refine): it is dropped.
-    std::vector<GridPoint> centres = buffer_centres(covered_cells(tree, level), level, reach);
+    std::vector<GridPoint> centres = grade_buffer_centres(grade_covered_cells(tree.leaves(), level), level, reach);
     while (!centres.empty()) {
       std::vector<Index> coarse;
       std::vector<GridPoint> pending;

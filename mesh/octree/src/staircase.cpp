@@ -55,7 +55,7 @@ void faces_of(const Octree& tree, const std::vector<Index>& cell_of, Index i,
 
 }  // namespace
 
-PolyMesh staircase_cells(const Octree& tree, const Domain& domain) {
+PolyMesh staircase_cells(const Octree& tree, const Domain& domain, std::vector<Index>* cell_leaf) {
   const OctreeVertices vertices = octree_vertex_geometry(tree);
 
   const Index n = tree.num_leaves();
@@ -65,10 +65,12 @@ PolyMesh staircase_cells(const Octree& tree, const Domain& domain) {
   domain.region(centres, region);
   std::vector<Index> cell_of(n, kNoIndex);
   PolyMesh mesh;
+  if (cell_leaf) cell_leaf->clear();
   for (Index i = 0; i < n; ++i)
     if (region[i] != 0) {
       cell_of[i] = mesh.num_cells();
       mesh.cell_region.push_back(region[i]);
+      if (cell_leaf) cell_leaf->push_back(i);
     }
   if (mesh.num_cells() == 0) return mesh;
 

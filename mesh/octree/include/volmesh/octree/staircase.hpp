@@ -32,7 +32,8 @@ struct StaircaseStats {
 PolyMesh staircase_mesh(const Domain& domain, const StaircaseOptions& options,
                         StaircaseStats* stats = nullptr);
 
-// The same cells for a given balanced tree (leaves kept by the region at their centre).
-PolyMesh staircase_cells(const Octree& tree, const Domain& domain);
+// The same cells for a given balanced tree (leaves kept by the region at their centre);
+// cell_leaf (optional): each cell's leaf.
+PolyMesh staircase_cells(const Octree& tree, const Domain& domain, std::vector<Index>* cell_leaf = nullptr);
 
 }  // namespace volmesh
