@@ -44,6 +44,9 @@ const std::vector<GoldenCase>& golden_cases() {
        .options = {{"refine-boundary", std::int64_t{1}}}},
       {.name = "hexdc-ball-3-sine", .method = "hexdc", .domain = "builtin:ball", .level = 3,
        .problem = "sine"},
+      {.name = "grid-box-2", .method = "grid", .domain = "builtin:box", .level = 2},
+      {.name = "grid-box-2-tets", .method = "grid", .domain = "builtin:box", .level = 2,
+       .options = {{"tets", true}}},
       {.name = "tet-projection-schoenhardt", .method = "tet-projection",
        .domain = "builtin:schoenhardt"},
       // Rounding to doubles flattens a tet along every untilted axis: the mesh is made again
