@@ -10,29 +10,59 @@
 
 namespace volmesh::golden {
 
-// Levels chosen so that each case meshes (and solves) in well under a second in a Release
-// build: the golden tests run in `make test`.
+// Levels and sizes chosen so that each case meshes (and solves) in well under a second in a
+// Release build: the golden tests run in `make test`.
 const std::vector<GoldenCase>& golden_cases() {
   static const std::vector<GoldenCase> cases{
-      {"cutcell-ball-4", "cutcell", "builtin:ball", 4, {}, ""},
-      {"cutcell-ball-midpoint-4", "cutcell", "builtin:ball", 4, {{"interface-points", std::string("midpoint")}}, ""},
-      {"cutcell-primitives-3", "cutcell", "builtin:primitives", 3, {}, ""},
-      {"cutcell-layers6-3", "cutcell", "builtin:layers6", 3, {}, ""},
-      {"cutcell-tetra-4", "cutcell", "data:surfaces/tetra_ascii.ply", 4, {}, ""},
-      {"staircase-ball-5", "staircase", "builtin:ball", 5, {}, ""},
-      {"staircase-ball-uniform-4", "staircase", "builtin:ball", 4, {{"base-level", std::int64_t{4}}}, ""},
-      {"staircase-primitives-4", "staircase", "builtin:primitives", 4, {}, ""},
-      {"staircase-layers6-4", "staircase", "builtin:layers6", 4, {}, ""},
-      {"staircase-tetra-5", "staircase", "data:surfaces/tetra_ascii.ply", 5, {}, ""},
-      {"cutcell-elephant-4", "cutcell", "cgal:meshes/elephant.off", 4, {}, ""},
-      {"staircase-elephant-5", "staircase", "cgal:meshes/elephant.off", 5, {}, ""},
-      {"cutcell-ball-3-sine", "cutcell", "builtin:ball", 3, {}, "sine"},
-      {"staircase-ball-4-sine", "staircase", "builtin:ball", 4, {}, "sine"},
-      {"hexdc-ball-4", "hexdc", "builtin:ball", 4, {}, ""},
-      {"hexdc-cube-3", "hexdc", "data:domains/inner_cube.off", 3, {}, ""},
-      {"hexdc-torus-4", "hexdc", "data:domains/torus.json", 4, {}, ""},
-      {"hexdc-ball-3-refined", "hexdc", "builtin:ball", 3, {{"refine-boundary", std::int64_t{1}}}, ""},
-      {"hexdc-ball-3-sine", "hexdc", "builtin:ball", 3, {}, "sine"},
+      {.name = "cutcell-ball-4", .method = "cutcell", .domain = "builtin:ball", .level = 4},
+      {.name = "cutcell-ball-midpoint-4", .method = "cutcell", .domain = "builtin:ball", .level = 4,
+       .options = {{"interface-points", std::string("midpoint")}}},
+      {.name = "cutcell-primitives-3", .method = "cutcell", .domain = "builtin:primitives", .level = 3},
+      {.name = "cutcell-layers6-3", .method = "cutcell", .domain = "builtin:layers6", .level = 3},
+      {.name = "cutcell-tetra-4", .method = "cutcell", .domain = "data:surfaces/tetra_ascii.ply",
+       .level = 4},
+      {.name = "staircase-ball-5", .method = "staircase", .domain = "builtin:ball", .level = 5},
+      {.name = "staircase-ball-uniform-4", .method = "staircase", .domain = "builtin:ball", .level = 4,
+       .options = {{"base-level", std::int64_t{4}}}},
+      {.name = "staircase-primitives-4", .method = "staircase", .domain = "builtin:primitives",
+       .level = 4},
+      {.name = "staircase-layers6-4", .method = "staircase", .domain = "builtin:layers6", .level = 4},
+      {.name = "staircase-tetra-5", .method = "staircase", .domain = "data:surfaces/tetra_ascii.ply",
+       .level = 5},
+      {.name = "cutcell-elephant-4", .method = "cutcell", .domain = "cgal:meshes/elephant.off",
+       .level = 4},
+      {.name = "staircase-elephant-5", .method = "staircase", .domain = "cgal:meshes/elephant.off",
+       .level = 5},
+      {.name = "cutcell-ball-3-sine", .method = "cutcell", .domain = "builtin:ball", .level = 3,
+       .problem = "sine"},
+      {.name = "staircase-ball-4-sine", .method = "staircase", .domain = "builtin:ball", .level = 4,
+       .problem = "sine"},
+      {.name = "hexdc-ball-4", .method = "hexdc", .domain = "builtin:ball", .level = 4},
+      {.name = "hexdc-cube-3", .method = "hexdc", .domain = "data:domains/inner_cube.off", .level = 3},
+      {.name = "hexdc-torus-4", .method = "hexdc", .domain = "data:domains/torus.json", .level = 4},
+      {.name = "hexdc-ball-3-refined", .method = "hexdc", .domain = "builtin:ball", .level = 3,
+       .options = {{"refine-boundary", std::int64_t{1}}}},
+      {.name = "hexdc-ball-3-sine", .method = "hexdc", .domain = "builtin:ball", .level = 3,
+       .problem = "sine"},
+      {.name = "grid-box-2", .method = "grid", .domain = "builtin:box", .level = 2},
+      {.name = "grid-box-2-tets", .method = "grid", .domain = "builtin:box", .level = 2,
+       .options = {{"tets", true}}},
+      {.name = "tet-projection-schoenhardt", .method = "tet-projection",
+       .domain = "builtin:schoenhardt"},
+      // Rounding to doubles flattens a tet along every untilted axis: the mesh is made again
+      // along the chosen axis tilted, the second direction tried (directions.hpp).
+      {.name = "tet-projection-cube-inclusion", .method = "tet-projection",
+       .domain = "builtin:cube-inclusion"},
+      {.name = "tet-projection-nested", .method = "tet-projection",
+       .domain = "data:domains/nested.json"},
+      {.name = "tet-front-cube-inclusion-2", .method = "tet-front",
+       .domain = "builtin:cube-inclusion", .size = 2.0},
+      {.name = "tet-front-ball-0.4", .method = "tet-front", .domain = "builtin:ball", .size = 0.4},
+      // The front stopped after 20 tets: the fallback closes the cavity by projection and
+      // refines the tets around the faces it cuts.
+      {.name = "tet-front-tripod-0.5-stalled", .method = "tet-front",
+       .domain = "cgal:meshes/tripod.off", .size = 0.5,
+       .options = {{"stop-after", std::int64_t{20}}}},
   };
   return cases;
 }
@@ -50,6 +80,7 @@ PolyMesh mesh_case(const GoldenCase& c, const Domain& domain) {
   meshers::MeshRequest request;
   request.domain_name = c.domain;
   request.level = c.level;
+  request.size = c.size;
   request.options = c.options;
   return meshers::mesh(meshers::find_mesher(c.method), domain, request).mesh;
 }

@@ -3,6 +3,7 @@
 // mesher, each summarised (golden_summary.hpp) and compared with the summary stored in
 // tests/golden/expected/<name>.json. regenerate.sh rewrites the stored summaries on purpose.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,13 @@ struct GoldenCase {
   // "cgal:" for libcgal-demo's unpacked data (make test installs it), so that the stored
   // summary names no absolute path.
   std::string domain;
-  int level;
-  meshers::MethodOptions options;  // by their command-line names, without "--"
-  std::string problem;  // a Poisson problem of the library solved on the mesh, or empty
+  // The fields below are empty unless a case gives them.
+  // --level for a level method, --size for a size method, neither for a method that meshes
+  // the domain's surfaces as given (meshers::Resolution).
+  std::optional<int> level = {};
+  std::optional<double> size = {};
+  meshers::MethodOptions options = {};  // by their command-line names, without "--"
+  std::string problem = {};  // a Poisson problem of the library solved on the mesh, or empty
 };
 
 // Every case, in one table.

@@ -143,10 +143,11 @@ json case_summary(const GoldenCase& c, const PolyMesh& mesh, const fem::ScalarSo
   json j = {{"case", c.name},
             {"method", c.method},
             {"domain", c.domain},
-            {"level", c.level},
             {"options", options},
             {"mesh", mesh_summary(mesh)},
             {"quality", quality_summary(mesh)}};
+  if (c.level) j["level"] = *c.level;
+  if (c.size) j["size"] = *c.size;
   if (solution) j["solve"] = solve_summary(c, *solution);
   return j;
 }

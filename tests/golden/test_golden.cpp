@@ -70,6 +70,7 @@ TEST_P(Golden, SummaryMatchesTheStoredOne) {
 INSTANTIATE_TEST_SUITE_P(Cases, Golden, testing::ValuesIn(golden_cases()), [](const auto& info) {
   std::string name = info.param.name;
   std::replace(name.begin(), name.end(), '-', '_');
+  std::replace(name.begin(), name.end(), '.', '_');  // a size's decimal point
   return name;
 });
 
