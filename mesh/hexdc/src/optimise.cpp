@@ -39,12 +39,15 @@ constexpr double kMaxMove = 0.3;
 constexpr double kEpsilonOfDet = 0.2;
 constexpr double kMinEpsilon = 1e-9;
 // Garanzha et al.'s least decrease rate σ of ε per round, and their stop: every tet positive
-// and the energy changing by less than this relative amount in a round.
+// and the energy changing by less than this relative amount in a round; or, here, this many
+// rounds with every tet positive (the optimisation then raises the worst).
 constexpr double kMinSigma = 0.1;
 constexpr double kSettled = 1e-5;
+constexpr int kPositiveRounds = 5;
 // An iteration lowering the energy by less than this relative amount ends the L-BFGS run.
 constexpr double kStalled = 1e-9;
-// The optimisation's line search accepts only points whose least tet measure is above this.
+// The untangling stops, and the optimisation's line search accepts only points, with every tet
+// measure above this.
 constexpr double kPositive = 1e-6;
 // A boundary node is a corner when its surface normals span three directions: the least
 // eigenvalue of Σ n nᵀ above this fraction of (1 − cos feature angle) times the largest.
@@ -394,6 +397,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   // A mesh whose tets are all positive goes straight to the optimisation, which raises its worst
   // measures: the barrier's rounds would trade them for a lower total distortion.
   const int rounds = at.least > kPositive ? 0 : options.untangle_rounds;
+  int positive_rounds = 0;
   for (int round = 0; round < rounds; ++round) {
     report(options.progress, "untangling",
            kUntangleShare * round / std::max(options.untangle_rounds, 1));
@@ -410,7 +414,8 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
     barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
     const double settled = std::abs(before - at.energy) / std::abs(at.energy);
     at = barrier_energy(p, barrier);
-    if (d > 0.0 && settled < kSettled) break;
+    positive_rounds = d > kPositive ? positive_rounds + 1 : 0;
+    if (positive_rounds > 0 && (settled < kSettled || positive_rounds == kPositiveRounds)) break;
   }
   stats.untangle_energy_after = at.energy;
 

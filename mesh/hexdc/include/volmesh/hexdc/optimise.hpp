@@ -6,8 +6,9 @@
 //  1. Untangling, when a tet is not positive: L-BFGS on the barrier energy of Garanzha et al.
 //     ("Foldover-free maps in 50 lines of code", 2021) over the tets, each against its shape in
 //     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
-//     rises (their rule), until every tet is positive and the energy settles. A mesh already
-//     untangled skips it: the barrier would trade its worst measures for less total distortion.
+//     rises (their rule), until every tet is positive and the energy settles or five rounds
+//     passed with every tet positive. A mesh already untangled skips it: the barrier trades the
+//     worst measures for less total distortion, and the optimisation raises the worst.
 //  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of the tets' scaled determinants
 //     (a corner's scaled Jacobian; an inner tet's scaled to 1 in a cube) and the sines of the
 //     boundary quads' angles (below 180°), raising the worst of them; its line search never
