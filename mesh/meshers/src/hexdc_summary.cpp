@@ -45,6 +45,7 @@ nlohmann::json optimisation_summary(const OptimiseStats& o) {
           {"crease_nodes", o.crease_nodes},
           {"corner_nodes", o.corner_nodes},
           {"held_off_surface", o.held_off_surface},
+          {"reverted", o.reverted},
           {"untangle_rounds", o.untangle_rounds},
           {"untangle_iterations", o.untangle_iterations},
           {"quality_iterations", o.quality_iterations},

@@ -44,6 +44,9 @@ struct OptimiseStats {
   double quality_energy_before = 0.0, quality_energy_after = 0.0;
   double min_quality_before = 0.0, min_quality_after = 0.0;  // the least tet measure
   double min_scaled_jacobian_before = 0.0, min_scaled_jacobian_after = 0.0;  // Verdict's
+  // A mesh given with every tet positive whose worst scaled Jacobian the optimisation lowered
+  // (its centre term and the quad angles are not among the tet measures) is given back as it was.
+  bool reverted = false;
   Index boundary_nodes = 0, crease_nodes = 0, corner_nodes = 0;
   Index held_off_surface = 0;  // boundary nodes whose last step back onto the surface would fold a tet
   double seconds = 0.0;
