@@ -142,6 +142,14 @@ TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
   EXPECT_TRUE(distortion >= 0.0 && distortion < 180.0) << distortion;
   EXPECT_GE(improved["max_aspect_ratio"].get<double>(), 1.0);
   EXPECT_LE(improved["min_edge"].get<double>(), improved["max_edge"].get<double>());
+  // The global optimiser's figures: no negative tet left, the worst scaled Jacobian not lowered.
+  const auto& optimisation = j["optimisation"];
+  EXPECT_EQ(optimisation["negative_tets_after"], 0);
+  EXPECT_GE(optimisation["min_scaled_jacobian_after"].get<double>(),
+            optimisation["min_scaled_jacobian_before"].get<double>());
+  EXPECT_EQ(optimisation["min_scaled_jacobian_after"], improved["min_scaled_jacobian"]);
+  EXPECT_GT(optimisation["quality_iterations"].get<int>(), 0);
+  EXPECT_TRUE(optimisation["seconds"].is_number());
   EXPECT_TRUE(j["field_seconds"].is_number());
   EXPECT_TRUE(uniform["seconds"].is_number());
   EXPECT_TRUE(improved["seconds"].is_number());

@@ -1,5 +1,6 @@
 #pragma once
 // Sampled signed-distance fields (positive inside) shared by the hexdc tests.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -33,6 +34,26 @@ inline VoxelGrid sample_paper_cube(const std::function<double(const Vec3&)>& f) 
 // A torus about z with radii 0.6 and 0.25.
 inline double torus_distance(const Vec3& p) {
   return 0.25 - std::hypot(std::hypot(p.x(), p.y()) - 0.6, p.z());
+}
+
+// The box [-kBoxHalfSide, kBoxHalfSide]^3, its sides off the paper cube's samples.
+inline constexpr double kBoxHalfSide = 0.55;
+
+inline double box_distance(const Vec3& p) {
+  const Vec3 d = p.cwiseAbs() - Vec3::Constant(kBoxHalfSide);
+  return -(d.cwiseMax(0.0).norm() + std::min(d.maxCoeff(), 0.0));
+}
+
+// The closest point of the box's surface: clamped outside; inside, onto the nearest face.
+inline Vec3 closest_on_box(const Vec3& p) {
+  const Vec3 clamped = p.cwiseMax(-kBoxHalfSide).cwiseMin(kBoxHalfSide);
+  if (clamped != p) return clamped;
+  int axis = 0;
+  const Vec3 depth = Vec3::Constant(kBoxHalfSide) - p.cwiseAbs();
+  depth.minCoeff(&axis);
+  Vec3 q = p;
+  q[axis] = std::copysign(kBoxHalfSide, p[axis]);
+  return q;
 }
 
 }  // namespace volmesh::test_fields

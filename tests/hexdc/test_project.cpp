@@ -18,11 +18,14 @@
 namespace volmesh {
 namespace {
 
+using test_fields::box_distance;
+using test_fields::closest_on_box;
+constexpr double kHalfSide = test_fields::kBoxHalfSide;
+
 using test_hexdc::corners_of;
 using test_hexdc::invalid_hexes;
 
 constexpr double kRadius = 0.8;   // of the sphere
-constexpr double kHalfSide = 0.55;  // of the box, off the grid's samples
 
 // The field's uniform mesh at `level`, pillowed and smoothed: the mesher's stages before
 // projection.
@@ -42,23 +45,6 @@ std::vector<Index> boundary_nodes(const HexMesh& mesh) {
 }
 
 Vec3 closest_on_sphere(const Vec3& p) { return kRadius * p.normalized(); }
-
-// The closest point of the box's surface: clamped outside; inside, onto the nearest face.
-Vec3 closest_on_box(const Vec3& p) {
-  const Vec3 clamped = p.cwiseMax(-kHalfSide).cwiseMin(kHalfSide);
-  if (clamped != p) return clamped;
-  int axis = 0;
-  const Vec3 depth = Vec3::Constant(kHalfSide) - p.cwiseAbs();
-  depth.minCoeff(&axis);
-  Vec3 q = p;
-  q[axis] = std::copysign(kHalfSide, p[axis]);
-  return q;
-}
-
-double box_distance(const Vec3& p) {
-  const Vec3 d = p.cwiseAbs() - Vec3::Constant(kHalfSide);
-  return -(d.cwiseMax(0.0).norm() + std::min(d.maxCoeff(), 0.0));
-}
 
 TEST(ProjectBoundary, SphereNodesEndOnTheSphereAndNoHexIsInvalid) {
   const VoxelGrid field =

@@ -34,14 +34,19 @@ ProbedPlane probe_plane(const HexMesh& mesh, Index q, const SurfaceProjector& cl
 
 }  // namespace
 
+std::vector<Vec3> surface_normals(const HexMesh& mesh, const std::vector<Index>& quads,
+                                  const SurfaceProjector& closest_point, double reach) {
+  std::vector<Vec3> normals;
+  normals.reserve(quads.size());
+  for (const Index q : quads) normals.push_back(probe_plane(mesh, q, closest_point, reach).normal);
+  return normals;
+}
+
 bool on_surface_feature(const HexMesh& mesh, const std::vector<Index>& quads,
                         const SurfaceProjector& closest_point, double reach, double cos_feature) {
-  std::vector<Vec3> normals;
+  const std::vector<Vec3> normals = surface_normals(mesh, quads, closest_point, reach);
   Vec3 sum = Vec3::Zero();
-  for (const Index q : quads) {
-    normals.push_back(probe_plane(mesh, q, closest_point, reach).normal);
-    sum += normals.back();
-  }
+  for (const Vec3& n : normals) sum += n;
   const Vec3 mean = sum.normalized();
   if (mean.isZero()) return true;
   return std::any_of(normals.begin(), normals.end(),

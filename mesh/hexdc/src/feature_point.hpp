@@ -14,6 +14,10 @@ namespace volmesh::hexdc_detail {
 Vec3 feature_point(const HexMesh& mesh, const std::vector<Index>& quads,
                    const SurfaceProjector& closest_point, std::size_t v, double reach);
 
+// The surface's unit normals under the boundary quads `quads` (probed as feature_point's planes).
+std::vector<Vec3> surface_normals(const HexMesh& mesh, const std::vector<Index>& quads,
+                                  const SurfaceProjector& closest_point, double reach);
+
 // Whether node v is on a crease or corner of the surface itself: the surface's normals under its
 // boundary quads (probed as feature_point's planes) leave their mean by more than the feature
 // angle. Unlike the mesh's quad normals, these do not make a node with a folded quad a feature.

@@ -20,13 +20,14 @@ constexpr double kSurfaceUntangleTarget = 0.3;
 
 // Where each stage starts, as a fraction of the run (rough shares of its time).
 constexpr double kContourStart = 0.0;
-constexpr double kRefineStart = 0.125;
-constexpr double kPillowStart = 0.19;
-constexpr double kSmoothStart = 0.25;
-constexpr double kUntangleStart = 0.44;
-constexpr double kProjectStart = 0.56;
-constexpr double kSurfaceUntangleStart = 0.81;
-constexpr double kCheckStart = 0.94;
+constexpr double kRefineStart = 0.06;
+constexpr double kPillowStart = 0.1;
+constexpr double kSmoothStart = 0.13;
+constexpr double kUntangleStart = 0.22;
+constexpr double kProjectStart = 0.28;
+constexpr double kSurfaceUntangleStart = 0.4;
+constexpr double kOptimiseStart = 0.47;
+constexpr double kCheckStart = 0.97;
 
 RefineStats refine_marked(HexMesh& mesh, const HexdcRefinement& refinement) {
   std::vector<char> marks = mark_boundary_layers(mesh, refinement.boundary_layers);
@@ -86,6 +87,12 @@ HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
   r.surface_untangling =
       untangle_hexes(r.mesh, {.target_quality = kSurfaceUntangleTarget}, surface);
   r.project_seconds = seconds_since(projecting);
+  // What the local moves leave: every free node at once, untangled if a tet is still folded,
+  // then the worst corners and boundary quad angles raised.
+  report(options.progress, "optimisation", kOptimiseStart);
+  OptimiseOptions optimise;
+  optimise.progress = part_of(options.progress, kOptimiseStart, kCheckStart);
+  r.optimisation = optimise_hexes(r.mesh, surface, optimise);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
   report(options.progress, "corner tets", kCheckStart);

@@ -39,6 +39,29 @@ nlohmann::json refinement_summary(const RefineStats& stats) {
             {"full", by_case(RefineCase::full)}}}};
 }
 
+// The global optimiser's figures.
+nlohmann::json optimisation_summary(const OptimiseStats& o) {
+  return {{"boundary_nodes", o.boundary_nodes},
+          {"crease_nodes", o.crease_nodes},
+          {"corner_nodes", o.corner_nodes},
+          {"held_off_surface", o.held_off_surface},
+          {"reverted", o.reverted},
+          {"untangle_rounds", o.untangle_rounds},
+          {"untangle_iterations", o.untangle_iterations},
+          {"quality_iterations", o.quality_iterations},
+          {"negative_tets_before", o.invalid_tets_before},
+          {"negative_tets_after", o.invalid_tets_after},
+          {"untangle_energy_before", o.untangle_energy_before},
+          {"untangle_energy_after", o.untangle_energy_after},
+          {"quality_energy_before", o.quality_energy_before},
+          {"quality_energy_after", o.quality_energy_after},
+          {"min_tet_quality_before", o.min_quality_before},
+          {"min_tet_quality_after", o.min_quality_after},
+          {"min_scaled_jacobian_before", o.min_scaled_jacobian_before},
+          {"min_scaled_jacobian_after", o.min_scaled_jacobian_after},
+          {"seconds", o.seconds}};
+}
+
 }  // namespace
 
 nlohmann::json hexdc_summary(const HexdcResult& r) {
@@ -67,6 +90,7 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
         {"on_surface_features_released", r.surface_untangling.features_released},
         {"on_surface_degenerate_after", r.surface_untangling.invalid_hexes_after}}},
       {"refinement", refinement_summary(r.refinement)},
+      {"optimisation", optimisation_summary(r.optimisation)},
       {"projection",
        {{"nodes_projected", projection.projected},
         {"nodes_kept_on_features", projection.feature_nodes},
@@ -81,7 +105,8 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
   nlohmann::json& stages = summary["stages"];
   stages["uniform"] = stage_row(r.uniform, r.contour_seconds);
   if (r.refined) stages["refined"] = stage_row(*r.refined, r.refine_seconds);
-  stages["improved"] = stage_row(r.improved, r.improve_seconds + r.project_seconds);
+  stages["improved"] =
+      stage_row(r.improved, r.improve_seconds + r.project_seconds + r.optimisation.seconds);
   return summary;
 }
 

@@ -7,7 +7,8 @@
 //   pillow (pillow.hpp): the buffer layer, so that no hex keeps two boundary faces;
 //   smooth (smoothing.hpp) and untangle (untangle.hpp) with the boundary fixed;
 //   project (project.hpp) the boundary nodes onto the surface;
-//   untangle again, the boundary nodes sliding on the surface.
+//   untangle again, the boundary nodes sliding on the surface;
+//   optimise (optimise.hpp) every free node at once, the boundary nodes on the surface.
 // Every hex of the result passes the ten corner tets; a mesh with one failing is refused.
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@
 #include "volmesh/core/voxel_grid.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
 #include "volmesh/hexdc/hex_mesh_stats.hpp"
+#include "volmesh/hexdc/optimise.hpp"
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/project.hpp"
 #include "volmesh/hexdc/refine.hpp"
@@ -53,6 +55,7 @@ struct HexdcResult {
   UntangleStats untangling;          // with the boundary fixed
   ProjectStats projection;
   UntangleStats surface_untangling;  // with the boundary nodes on the surface
+  OptimiseStats optimisation;
   // The paper's Table 1 columns: the uniform mesh, the refined one (set when the refinement
   // changed the mesh) and the final one.
   HexMeshStats uniform, improved;

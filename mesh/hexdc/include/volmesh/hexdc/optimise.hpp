@@ -1,0 +1,61 @@
+#pragma once
+// Untangling and optimisation of a hex mesh over all its free nodes at once.
+//
+// Each hex counts its ten corner tets (hex_quality.hpp's kHexCornerTets: the eight corner
+// Jacobians and the ten-tet test's two inner tets).
+//  1. Untangling, when a tet is not positive: L-BFGS on the barrier energy of Garanzha et al.
+//     ("Foldover-free maps in 50 lines of code", 2021) over the tets, each against its shape in
+//     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
+//     rises (their rule), until every tet is positive and the energy settles or five rounds
+//     passed with every tet positive. A mesh already untangled skips it: the barrier trades the
+//     worst measures for less total distortion, and the optimisation raises the worst.
+//  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of the tets' scaled determinants
+//     (a corner's scaled Jacobian; an inner tet's scaled to 1 in a cube) and the sines of the
+//     boundary quads' angles (below 180°), raising the worst of them; its line search never
+//     accepts a point with a tet or a boundary quad corner that is not positive.
+// Boundary nodes slide on the surface: they step in their tangent planes (crease nodes along
+// their crease, corner nodes not at all) and, after each untangling round and after the
+// optimisation, go back onto the surface's closest point unless that would fold a tet or lower
+// the worst measure (held_off_surface counts those). Without a surface the boundary nodes stay. The energies and gradients are
+// summed over the hexes in parallel (TBB) into per-hex slots added in hex order, so the result
+// is the same for any thread count.
+#include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/progress.hpp"
+#include "volmesh/hexdc/surface_projector.hpp"
+
+namespace volmesh {
+
+struct OptimiseOptions {
+  int untangle_rounds = 40;         // ε updates, each an L-BFGS run
+  int untangle_iterations = 50;     // L-BFGS iterations per round
+  int quality_iterations = 300;     // L-BFGS iterations of the soft minimum
+  double theta = 1.0 / 128.0;       // the barrier's volume weight (Garanzha et al.'s)
+  double softmin_sharpness = 40.0;  // β of the soft minimum: weights fall by e per 1/β
+  // Boundary nodes whose surface normals under their quads leave their mean by more than this
+  // are crease or corner nodes (as the other stages').
+  double feature_angle_deg = 40.0;
+  Progress progress;
+};
+
+struct OptimiseStats {
+  int untangle_rounds = 0, untangle_iterations = 0, quality_iterations = 0;
+  Index invalid_tets_before = 0, invalid_tets_after = 0;  // by the doubles' determinants
+  double untangle_energy_before = 0.0, untangle_energy_after = 0.0;
+  double quality_energy_before = 0.0, quality_energy_after = 0.0;
+  double min_quality_before = 0.0, min_quality_after = 0.0;  // the least tet measure
+  double min_scaled_jacobian_before = 0.0, min_scaled_jacobian_after = 0.0;  // Verdict's
+  // A mesh given with every tet positive whose worst scaled Jacobian the optimisation lowered
+  // (its centre term and the quad angles are not among the tet measures) is given back as it was.
+  bool reverted = false;
+  Index boundary_nodes = 0, crease_nodes = 0, corner_nodes = 0;
+  Index held_off_surface = 0;  // boundary nodes whose last step back onto the surface would fold a tet
+  double seconds = 0.0;
+};
+
+// Moves mesh.points in place; connectivity and boundary faces are unchanged. An empty mesh is
+// left as it is. Throws InputError for iteration counts below 0, θ outside [0, 1), a
+// sharpness not above 0 or a feature angle outside [0, 180] degrees.
+OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
+                             const OptimiseOptions& options = {});
+
+}  // namespace volmesh

@@ -1,0 +1,456 @@
+#include "volmesh/hexdc/optimise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "feature_point.hpp"
+#include "hex_energy.hpp"
+#include "hex_mesh_geometry.hpp"
+#include "lbfgs.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/core/stopwatch.hpp"
+#include "volmesh/quality/hex_metrics.hpp"
+
+namespace volmesh {
+namespace {
+
+using namespace hexdc_detail;
+using Eigen::VectorXd;
+
+// Hexes (quads, nodes) per parallel task: a few thousand, so that a small mesh runs on one
+// thread and a large one wakes the others a few times per evaluation, not for every block.
+constexpr std::size_t kGrain = 512;
+constexpr std::size_t kLbfgsMemory = 7;
+// Armijo's sufficient decrease, and the halvings of a step before the line search gives up.
+constexpr double kArmijo = 1e-4;
+constexpr int kHalvings = 30;
+// No node moves more than this fraction of its shortest edge (at the start) in one step.
+constexpr double kMaxMove = 0.3;
+// The regulariser's start: 0.2 |least determinant| when some tet is inverted (Garanzha et al.);
+// the floor keeps it above round-off once every tet is positive.
+constexpr double kEpsilonOfDet = 0.2;
+constexpr double kMinEpsilon = 1e-9;
+// Garanzha et al.'s least decrease rate σ of ε per round, and their stop: every tet positive
+// and the energy changing by less than this relative amount in a round; or, here, this many
+// rounds with every tet positive (the optimisation then raises the worst).
+constexpr double kMinSigma = 0.1;
+constexpr double kSettled = 1e-5;
+constexpr int kPositiveRounds = 5;
+// An iteration lowering the energy by less than this relative amount ends the L-BFGS run.
+constexpr double kStalled = 1e-9;
+// The untangling stops, and the optimisation's line search accepts only points, with every tet
+// measure above this.
+constexpr double kPositive = 1e-6;
+// A boundary node is a corner when its surface normals span three directions: the least
+// eigenvalue of Σ n nᵀ above this fraction of (1 − cos feature angle) times the largest.
+constexpr double kCornerSpan = 0.25;
+// Share of the run the untangling takes, the optimisation the rest.
+constexpr double kUntangleShare = 0.5;
+
+enum class NodeKind : std::uint8_t { fixed, free, surface, crease };
+
+struct Problem {
+  HexMesh& mesh;
+  const SurfaceProjector& surface;
+  std::vector<std::vector<Index>> hexes;  // hexes of each node
+  std::vector<std::vector<Index>> quads;  // boundary quads of each node
+  std::vector<NodeKind> kind;
+  std::vector<Vec3> crease;               // a crease node's direction
+  std::vector<double> reach;              // shortest edge at the node, at the start
+  std::vector<double> size;               // a hex's mean edge, at the start
+};
+
+// How each node may move: interior nodes freely; boundary nodes, with a surface, on it
+// (smooth), along their crease, or not at all (a corner); without a surface, not at all.
+void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
+  const HexMesh& mesh = p.mesh;
+  p.hexes = hexes_of_nodes(mesh);
+  const std::vector<std::vector<Index>>& hexes = p.hexes;
+  const std::size_t n = mesh.points.size();
+  p.quads = boundary_quads_of_nodes(mesh);
+  p.kind.assign(n, NodeKind::fixed);
+  p.crease.assign(n, Vec3::Zero());
+  p.reach.assign(n, std::numeric_limits<double>::infinity());
+  p.size.assign(mesh.cells.size(), 0.0);
+  for (std::size_t h = 0; h < mesh.cells.size(); ++h) {
+    const auto& cell = mesh.cells[h];
+    for (const auto& [a, b] : kHexEdges) {
+      const auto u = static_cast<std::size_t>(cell[a]), w = static_cast<std::size_t>(cell[b]);
+      const double length = (mesh.points[u] - mesh.points[w]).norm();
+      p.reach[u] = std::min(p.reach[u], length);
+      p.reach[w] = std::min(p.reach[w], length);
+      p.size[h] += length / static_cast<double>(kHexEdges.size());
+    }
+  }
+  const double corner_span = kCornerSpan * (1.0 - cos_feature);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (hexes[v].empty()) continue;
+    if (p.quads[v].empty()) {
+      p.kind[v] = NodeKind::free;
+      continue;
+    }
+    ++stats.boundary_nodes;
+    if (!p.surface) continue;
+    const std::vector<Vec3> normals = surface_normals(mesh, p.quads[v], p.surface, p.reach[v]);
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& normal : normals) sum += normal;
+    const Vec3 mean = sum.normalized();
+    const bool smooth = !mean.isZero() && std::all_of(normals.begin(), normals.end(), [&](const Vec3& m) {
+      return m.dot(mean) >= cos_feature;
+    });
+    if (smooth) {
+      p.kind[v] = NodeKind::surface;
+      continue;
+    }
+    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+    for (const Vec3& normal : normals) spread += normal * normal.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(spread);
+    if (eigen.eigenvalues()(0) > corner_span * eigen.eigenvalues()(2)) {
+      ++stats.corner_nodes;
+      continue;
+    }
+    ++stats.crease_nodes;
+    p.kind[v] = NodeKind::crease;
+    p.crease[v] = eigen.eigenvectors().col(0);
+  }
+}
+
+VectorXd flatten(const std::vector<Vec3>& points) {
+  VectorXd x(static_cast<Eigen::Index>(3 * points.size()));
+  for (std::size_t v = 0; v < points.size(); ++v) x.segment<3>(static_cast<Eigen::Index>(3 * v)) = points[v];
+  return x;
+}
+
+void unflatten(const VectorXd& x, std::vector<Vec3>& points) {
+  for (std::size_t v = 0; v < points.size(); ++v) points[v] = x.segment<3>(static_cast<Eigen::Index>(3 * v));
+}
+
+// A node's part of a step or gradient restricted to how it may move.
+void restrict_moves(const Problem& p, VectorXd& d) {
+  for (std::size_t v = 0; v < p.kind.size(); ++v) {
+    auto part = d.segment<3>(static_cast<Eigen::Index>(3 * v));
+    switch (p.kind[v]) {
+      case NodeKind::free:
+        break;
+      case NodeKind::fixed:
+        part.setZero();
+        break;
+      case NodeKind::surface: {
+        const Vec3 normal = node_normal(p.mesh, p.quads[v]);
+        part -= part.dot(normal) * normal;
+        break;
+      }
+      case NodeKind::crease:
+        part = part.dot(p.crease[v]) * p.crease[v];
+        break;
+    }
+  }
+}
+
+// The least tet measure over node v's hexes.
+double least_around(const HexMesh& mesh, const std::vector<Index>& hexes) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Index h : hexes) {
+    const auto q = hex_tet_qualities(hex_corners(mesh, h));
+    least = std::min(least, *std::min_element(q.begin(), q.end()));
+  }
+  return least;
+}
+
+// Takes the sliding boundary nodes, which step in their tangent planes (or along their creases)
+// and so leave a curved surface by the square of their steps, back onto it: each to its closest
+// point, in node order, unless that makes the least tet measure of its hexes fall below the
+// lesser of what it was and `floor`. Returns how many stayed off.
+Index snap(const Problem& p, double floor) {
+  Index held = 0;
+  if (!p.surface) return held;
+  std::vector<Vec3>& points = p.mesh.points;
+  std::vector<Vec3> targets(points.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), kGrain), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v < range.end(); ++v)
+      if (p.kind[v] == NodeKind::surface || p.kind[v] == NodeKind::crease)
+        targets[v] = p.surface(points[v]);
+  });
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if (p.kind[v] != NodeKind::surface && p.kind[v] != NodeKind::crease) continue;
+    if (targets[v] == points[v]) continue;
+    const double before = least_around(p.mesh, p.hexes[v]);
+    const Vec3 kept = points[v];
+    points[v] = targets[v];
+    if (least_around(p.mesh, p.hexes[v]) < std::min(before, floor)) {
+      points[v] = kept;
+      ++held;
+    }
+  }
+  return held;
+}
+
+// The energy at mesh.points with its gradient, and the least tet measure there.
+struct Evaluation {
+  double energy = 0.0;
+  double least = 0.0;  // the least det J (untangling) or tet measure (optimisation)
+  VectorXd gradient;
+};
+
+// Per-hex values computed in parallel, each into its own slot, then summed in hex order.
+struct HexSlots {
+  std::vector<double> value, least;
+  std::vector<HexGradient> gradient;
+  explicit HexSlots(std::size_t hexes) : value(hexes), least(hexes), gradient(hexes) {}
+};
+
+void add_hex_gradients(const HexMesh& mesh, const std::vector<HexGradient>& gradient, double scale,
+                       VectorXd& total) {
+  for (std::size_t h = 0; h < mesh.cells.size(); ++h)
+    for (std::size_t c = 0; c < 8; ++c)
+      total.segment<3>(static_cast<Eigen::Index>(3 * mesh.cells[h][c])) += scale * gradient[h][c];
+}
+
+Evaluation barrier_energy(const Problem& p, const Barrier& barrier) {
+  const HexMesh& mesh = p.mesh;
+  HexSlots slots(mesh.cells.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.cells.size(), kGrain), [&](const auto& range) {
+    for (std::size_t h = range.begin(); h < range.end(); ++h) {
+      slots.gradient[h].fill(Vec3::Zero());
+      slots.least[h] = std::numeric_limits<double>::infinity();
+      slots.value[h] = hex_barrier(hex_corners(mesh, static_cast<Index>(h)), p.size[h], barrier,
+                                   slots.gradient[h], slots.least[h]);
+    }
+  });
+  Evaluation e;
+  e.energy = std::accumulate(slots.value.begin(), slots.value.end(), 0.0);
+  e.least = *std::min_element(slots.least.begin(), slots.least.end());
+  e.gradient = VectorXd::Zero(static_cast<Eigen::Index>(3 * mesh.points.size()));
+  add_hex_gradients(mesh, slots.gradient, 1.0, e.gradient);
+  return e;
+}
+
+std::array<Vec3, 4> quad_corners(const HexMesh& mesh, std::size_t q) {
+  std::array<Vec3, 4> corners;
+  for (std::size_t c = 0; c < 4; ++c)
+    corners[c] = mesh.points[static_cast<std::size_t>(mesh.boundary_faces[q][c])];
+  return corners;
+}
+
+// −(1/β) log Σ exp(−β q) over every hex's ten tet measures and every boundary quad's corner
+// sines, negated: minimising it raises the soft minimum. `least` is the least tet measure.
+Evaluation softmin_energy(const Problem& p, double beta) {
+  const HexMesh& mesh = p.mesh;
+  const std::size_t hexes = mesh.cells.size(), quads = mesh.boundary_faces.size();
+  HexSlots slots(hexes);
+  std::vector<double> quad_value(quads), quad_least(quads);
+  std::vector<std::array<Vec3, 4>> quad_gradient(quads);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
+    for (std::size_t h = range.begin(); h < range.end(); ++h) {
+      const auto q = hex_tet_qualities(hex_corners(mesh, static_cast<Index>(h)));
+      slots.least[h] = *std::min_element(q.begin(), q.end());
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
+    for (std::size_t q = range.begin(); q < range.end(); ++q) {
+      const auto s = quad_sines(quad_corners(mesh, q));
+      quad_least[q] = *std::min_element(s.begin(), s.end());
+    }
+  });
+  Evaluation e;
+  e.least = *std::min_element(slots.least.begin(), slots.least.end());
+  const double shift = quads > 0 ? std::min(e.least, *std::min_element(quad_least.begin(), quad_least.end()))
+                                 : e.least;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
+    for (std::size_t h = range.begin(); h < range.end(); ++h) {
+      slots.gradient[h].fill(Vec3::Zero());
+      slots.value[h] = hex_softmin_terms(hex_corners(mesh, static_cast<Index>(h)), beta, shift,
+                                         slots.gradient[h]);
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
+    for (std::size_t q = range.begin(); q < range.end(); ++q) {
+      quad_gradient[q].fill(Vec3::Zero());
+      quad_value[q] = quad_softmin_terms(quad_corners(mesh, q), beta, shift, quad_gradient[q]);
+    }
+  });
+  const double sum = std::accumulate(slots.value.begin(), slots.value.end(), 0.0) +
+                     std::accumulate(quad_value.begin(), quad_value.end(), 0.0);
+  e.energy = -shift + std::log(sum) / beta;
+  e.gradient = VectorXd::Zero(static_cast<Eigen::Index>(3 * mesh.points.size()));
+  const double scale = 1.0 / (beta * sum);
+  add_hex_gradients(mesh, slots.gradient, scale, e.gradient);
+  for (std::size_t q = 0; q < quads; ++q)
+    for (std::size_t c = 0; c < 4; ++c)
+      e.gradient.segment<3>(static_cast<Eigen::Index>(3 * mesh.boundary_faces[q][c])) +=
+          scale * quad_gradient[q][c];
+  return e;
+}
+
+// The largest step along d that moves no node by more than kMaxMove of its reach.
+double step_cap(const Problem& p, const VectorXd& d) {
+  double cap = std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < p.reach.size(); ++v) {
+    const double move = d.segment<3>(static_cast<Eigen::Index>(3 * v)).norm();
+    if (move > 0.0) cap = std::min(cap, kMaxMove * p.reach[v] / move);
+  }
+  return cap;
+}
+
+// L-BFGS on `evaluate` (an Evaluation of mesh.points) from mesh.points, the sliding nodes kept on
+// the surface, for at most `iterations` iterations; a point is accepted only when `feasible`
+// says so. Returns the iterations taken and leaves mesh.points at the last accepted point.
+template <class Evaluate, class Feasible, class Tick>
+int descend(const Problem& p, int iterations, const Evaluate& evaluate, const Feasible& feasible,
+            const Tick& tick, Evaluation& at) {
+  std::vector<Vec3>& points = p.mesh.points;
+  Lbfgs lbfgs(kLbfgsMemory);
+  VectorXd x = flatten(points);
+  VectorXd g = at.gradient;
+  restrict_moves(p, g);
+  int done = 0;
+  for (; done < iterations; ++done) {
+    tick(done);
+    VectorXd d = lbfgs.direction(g);
+    restrict_moves(p, d);
+    if (!(g.dot(d) < 0.0)) {
+      lbfgs.reset();
+      d = -g;
+    }
+    if (!(g.dot(d) < 0.0)) break;  // no descent left in the allowed moves
+    double alpha = std::min(lbfgs.empty() ? std::numeric_limits<double>::infinity() : 1.0,
+                            step_cap(p, d));
+    bool accepted = false;
+    Evaluation trial;
+    for (int k = 0; k <= kHalvings && !accepted; ++k, alpha *= 0.5) {
+      unflatten(x + alpha * d, points);
+      trial = evaluate();
+      const VectorXd moved = flatten(points) - x;
+      accepted = feasible(trial) &&
+                 trial.energy <= at.energy + kArmijo * std::min(g.dot(moved), 0.0) &&
+                 trial.energy < at.energy;
+    }
+    if (!accepted) {
+      unflatten(x, points);
+      break;
+    }
+    const VectorXd x_new = flatten(points);
+    VectorXd g_new = trial.gradient;
+    restrict_moves(p, g_new);
+    lbfgs.push(x_new - x, g_new - g);
+    const double drop = at.energy - trial.energy;
+    x = x_new;
+    g = std::move(g_new);
+    at = std::move(trial);
+    if (drop <= kStalled * std::abs(at.energy)) {
+      ++done;
+      break;
+    }
+  }
+  return done;
+}
+
+double least_scaled_jacobian(const HexMesh& mesh) {
+  double least = std::numeric_limits<double>::infinity();
+  for (Index h = 0; h < mesh.num_cells(); ++h)
+    least = std::min(least, hex_scaled_jacobian(hex_corners(mesh, h)));
+  return least;
+}
+
+Index count_negative(const HexMesh& mesh) {
+  Index n = 0;
+  for (Index h = 0; h < mesh.num_cells(); ++h)
+    for (const double q : hex_tet_qualities(hex_corners(mesh, h))) n += q > 0.0 ? 0 : 1;
+  return n;
+}
+
+}  // namespace
+
+OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
+                             const OptimiseOptions& options) {
+  if (options.untangle_rounds < 0 || options.untangle_iterations < 0 ||
+      options.quality_iterations < 0)
+    throw InputError("optimise_hexes: iteration counts must not be negative");
+  if (!(options.theta >= 0.0 && options.theta < 1.0))
+    throw InputError("optimise_hexes: theta must lie in [0, 1)");
+  if (!(options.softmin_sharpness > 0.0))
+    throw InputError("optimise_hexes: the soft minimum's sharpness must be positive");
+  const double cos_feature = feature_cosine("optimise_hexes", options.feature_angle_deg);
+  OptimiseStats stats;
+  if (mesh.cells.empty()) return stats;
+  const Clock::time_point start = Clock::now();
+  Problem p{mesh, surface, {}, {}, {}, {}, {}, {}};
+  classify(p, cos_feature, stats);
+  stats.invalid_tets_before = count_negative(mesh);
+  stats.min_scaled_jacobian_before = least_scaled_jacobian(mesh);
+  const std::vector<Vec3> given = mesh.points;
+
+  // 1. Untangling: Garanzha et al.'s rounds, ε following the least determinant.
+  Barrier barrier{.epsilon = 0.0, .theta = options.theta};
+  Evaluation at = barrier_energy(p, barrier);
+  barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
+  at = barrier_energy(p, barrier);
+  stats.untangle_energy_before = at.energy;
+  const auto any_point = [](const Evaluation&) { return true; };
+  // A mesh whose tets are all positive goes straight to the optimisation, which raises its worst
+  // measures: the barrier's rounds would trade them for a lower total distortion.
+  const int rounds = at.least > kPositive ? 0 : options.untangle_rounds;
+  int positive_rounds = 0;
+  for (int round = 0; round < rounds; ++round) {
+    report(options.progress, "untangling",
+           kUntangleShare * round / std::max(options.untangle_rounds, 1));
+    const double before = at.energy;
+    stats.untangle_iterations += descend(
+        p, options.untangle_iterations, [&] { return barrier_energy(p, barrier); }, any_point,
+        [](int) {}, at);
+    snap(p, kPositive);
+    at = barrier_energy(p, barrier);
+    ++stats.untangle_rounds;
+    const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
+    const double d = at.least, root = std::hypot(d, barrier.epsilon);
+    barrier.epsilon *= d >= 0.0 ? 1.0 - sigma : 1.0 - sigma * root / (std::abs(d) + root);
+    barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
+    const double settled = std::abs(before - at.energy) / std::abs(at.energy);
+    at = barrier_energy(p, barrier);
+    positive_rounds = d > kPositive ? positive_rounds + 1 : 0;
+    if (positive_rounds > 0 && (settled < kSettled || positive_rounds == kPositiveRounds)) break;
+  }
+  stats.untangle_energy_after = at.energy;
+
+  // 2. The worst measure raised, no tet allowed to turn negative.
+  const double beta = options.softmin_sharpness;
+  at = softmin_energy(p, beta);
+  stats.min_quality_before = at.least;
+  stats.quality_energy_before = at.energy;
+  if (at.least > kPositive) {
+    const auto tick = [&](int done) {
+      report(options.progress, "optimisation",
+             kUntangleShare + (1.0 - kUntangleShare) * done / std::max(options.quality_iterations, 1));
+    };
+    stats.quality_iterations = descend(
+        p, options.quality_iterations, [&] { return softmin_energy(p, beta); },
+        [](const Evaluation& e) { return e.least > kPositive; }, tick, at);
+    stats.held_off_surface = snap(p, at.least);
+    at = softmin_energy(p, beta);
+  }
+  stats.min_quality_after = at.least;
+  stats.quality_energy_after = at.energy;
+  stats.invalid_tets_after = count_negative(mesh);
+  stats.min_scaled_jacobian_after = least_scaled_jacobian(mesh);
+  // The tets are not the whole scaled Jacobian (its centre term, the quads): a mesh given with
+  // every tet positive is given back as it was if the optimisation lowered its worst one.
+  if (stats.invalid_tets_before == 0 &&
+      stats.min_scaled_jacobian_after < stats.min_scaled_jacobian_before) {
+    mesh.points = given;
+    stats.reverted = true;
+    stats.invalid_tets_after = 0;
+    stats.min_scaled_jacobian_after = stats.min_scaled_jacobian_before;
+  }
+  stats.seconds = seconds_since(start);
+  return stats;
+}
+
+}  // namespace volmesh
