@@ -12,19 +12,6 @@
 namespace volmesh::test {
 namespace {
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string read_error(const std::filesystem::path& path) {
-  try {
-    read_mesh(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 // Two tets sharing the face x + y + z = 1 (volumes 1/6 and 1/3), as other tools write MEDIT:
 // version 1, references 0, a comment, a keyword skipped.
 constexpr const char* kTwoTets = R"(MeshVersionFormatted 1
@@ -101,7 +88,7 @@ TEST(MeditReader, RefusesBadFilesWithOneLine) {
   for (const auto& [text, expected] : cases) {
     const auto path = dir / "bad.mesh";
     write_text(path, text);
-    const std::string error = read_error(path);
+    const std::string error = read_mesh_error(path);
     EXPECT_NE(error.find(path.string() + ": "), std::string::npos) << error;
     EXPECT_NE(error.find(expected), std::string::npos) << expected << " in: " << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;

@@ -16,19 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string read_error(const fs::path& path) {
-  try {
-    read_mesh(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 // The files `tetgen -A` writes for `mesh`, points numbered from `first`; boundary tag t has
 // marker t + 1.
 void write_tetgen(const PolyMesh& poly, const fs::path& base, int first) {
@@ -101,7 +88,7 @@ TEST(TetgenReader, RefusesBadFilesWithOneLine) {
   for (const Case& c : cases) {
     write_text(dir / "t.node", c.node);
     write_text(dir / "t.ele", c.ele);
-    const std::string error = read_error(dir / "t.node");
+    const std::string error = read_mesh_error(dir / "t.node");
     EXPECT_NE(error.find(c.expected), std::string::npos) << c.expected << " in: " << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
   }
@@ -110,7 +97,7 @@ TEST(TetgenReader, RefusesBadFilesWithOneLine) {
   write_text(dir / "t.ele", "1 4 0\n1 1 3 2 4\n");
   EXPECT_EQ(check_validity(read_mesh(dir / "t.ele")).non_positive_cells, 1);
   fs::remove(dir / "t.ele");
-  EXPECT_NE(read_error(dir / "t.node").find("t.ele: cannot open"), std::string::npos);
+  EXPECT_NE(read_mesh_error(dir / "t.node").find("t.ele: cannot open"), std::string::npos);
 }
 
 }  // namespace
