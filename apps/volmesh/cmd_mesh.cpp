@@ -1,8 +1,6 @@
 // volmesh mesh <method> <domain> -o <out> [--level N] [--json] [--threads T]: the meshers of
 // the registry (volmesh/meshers/registry.hpp). Every mesh is checked before it is written.
 #include <CLI/CLI.hpp>
-#include <oneapi/tbb/global_control.h>
-
 #include <iostream>
 #include <map>
 #include <memory>
@@ -12,6 +10,7 @@
 #include "commands.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
+#include "thread_limit.hpp"
 #include "reports.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
@@ -57,10 +56,7 @@ nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validi
 int run_mesh(const MeshOptions& opt) {
   const meshers::MesherInfo& info = meshers::find_mesher(opt.method);
   if (!options_apply("mesh", info, opt.given)) return 2;
-  std::unique_ptr<tbb::global_control> threads;
-  if (opt.threads > 0)
-    threads = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
+  const auto threads = limit_threads(opt.threads);
   require_writable_mesh_path(opt.output);
 
   const Clock::time_point start = Clock::now();

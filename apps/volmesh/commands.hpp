@@ -23,5 +23,6 @@ Command add_mesh_command(CLI::App& root);
 Command add_partition_command(CLI::App& root);
 Command add_solve_command(CLI::App& root);
 Command add_study_command(CLI::App& root);
+Command add_improve_command(CLI::App& root);
 
 }  // namespace volmesh::cli

@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   std::vector<cli::Command> commands{
       cli::add_info_command(app),      cli::add_convert_command(app), cli::add_check_command(app),
       cli::add_demo_command(app),      cli::add_sdf_command(app),     cli::add_mesh_command(app),
-      cli::add_partition_command(app), cli::add_solve_command(app),   cli::add_study_command(app)};
+      cli::add_partition_command(app), cli::add_solve_command(app),   cli::add_study_command(app),
+      cli::add_improve_command(app)};
   // After the subcommands, which would otherwise inherit it.
   app.footer(R"(Examples:
   volmesh demo                                       the main job on built-in data

@@ -11,7 +11,7 @@ namespace volmesh::cli {
 void require_known_format(const std::filesystem::path& path) {
   if (!is_surface_file(path) && !is_mesh_file(path))
     throw InputError(path.string() +
-                     ": unknown format (surfaces: .stl .off .obj .ply; meshes: .vtu .msh)");
+                     ": unknown format (surfaces: .stl .off .obj .ply; meshes: .vtu .msh .mesh .node .ele)");
 }
 
 Box bounding_box(const std::vector<Vec3>& points) {

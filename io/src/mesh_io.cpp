@@ -28,7 +28,8 @@ bool is_foam_case(const std::filesystem::path& path) {
 
 bool is_mesh_file(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".vtu" || ext == ".pvtu" || ext == ".msh" || ext == ".foam" || is_foam_case(path);
+  return ext == ".vtu" || ext == ".pvtu" || ext == ".msh" || ext == ".mesh" || ext == ".node" ||
+         ext == ".ele" || ext == ".foam" || is_foam_case(path);
 }
 
 void require_writable_mesh_path(const std::filesystem::path& path) {
@@ -55,8 +56,11 @@ PolyMesh read_mesh(const std::filesystem::path& path) {
   if (ext == ".vtu") return read_vtu(path);
   if (ext == ".pvtu") return read_pvtu(path);
   if (ext == ".msh") return read_msh(path);
+  if (ext == ".mesh") return read_medit(path);
+  if (ext == ".node" || ext == ".ele") return read_tetgen(path);
   if (ext == ".foam" || is_foam_case(path)) return read_foam(path);
-  throw InputError(path.string() + ": unknown mesh format (readable: .vtu .pvtu .msh, a DIR.foam case)");
+  throw InputError(path.string() +
+                   ": unknown mesh format (readable: .vtu .pvtu .msh .mesh .node .ele, a DIR.foam case)");
 }
 
 }  // namespace volmesh

@@ -1,6 +1,7 @@
 #pragma once
-// The lexer of the MSH reader: the file read whole, split into whitespace-separated tokens,
-// with checked numbers and one-line errors naming the file and line.
+// The lexer of the text mesh readers (MSH, MEDIT, TetGen): the file read whole, split into
+// whitespace-separated tokens, with checked numbers and one-line errors naming the file and
+// line.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -26,12 +27,13 @@ inline std::string read_text(const std::filesystem::path& path) {
   return text;
 }
 
-// Whitespace-separated tokens of a MSH file (on surface_text.hpp's cursor), with checked
-// numbers and errors naming the file and line.
+// Whitespace-separated tokens of a text file (on surface_text.hpp's cursor), with checked
+// numbers and errors naming the file and line; `comment`, when given, starts a comment that
+// runs to the line end.
 class Tokens {
  public:
-  Tokens(std::string source, std::string text)
-      : source_(std::move(source)), text_(std::move(text)), cursor_(text_) {}
+  Tokens(std::string source, std::string text, char comment = '\0')
+      : source_(std::move(source)), text_(std::move(text)), cursor_(text_), comment_(comment) {}
   Tokens(const Tokens&) = delete;  // the cursor points into text_
   Tokens& operator=(const Tokens&) = delete;
 
@@ -40,7 +42,7 @@ class Tokens {
   }
 
   bool at_end() {
-    cursor_.skip_space();
+    cursor_.skip_space(comment_);
     return cursor_.at_end();
   }
 
@@ -103,6 +105,7 @@ class Tokens {
   std::string source_;
   std::string text_;
   surface_detail::TextCursor cursor_;
+  char comment_;
 };
 
 }  // namespace volmesh::msh

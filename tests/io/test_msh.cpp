@@ -12,19 +12,6 @@
 namespace volmesh::test {
 namespace {
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string read_error(const std::filesystem::path& path) {
-  try {
-    read_msh(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 // Boundary faces and faces between regions: the triangles / quads an MSH file holds.
 long surface_elements(const PolyMesh& mesh) {
   long n = 0;
@@ -266,12 +253,12 @@ TEST(Msh, BadFilesGiveOneLineErrors) {
   for (const BadFile& bad : cases) {
     const auto path = dir / bad.name;
     write_text(path, bad.text);
-    const std::string what = read_error(path);
+    const std::string what = read_mesh_error(path);
     EXPECT_EQ(what.rfind(path.string() + ": ", 0), 0u) << what;
     EXPECT_NE(what.find(bad.message), std::string::npos) << bad.name << ": " << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
-  EXPECT_NE(read_error(dir / "missing.msh"), "no error");
+  EXPECT_NE(read_mesh_error(dir / "missing.msh"), "no error");
 }
 
 // Every truncation of a valid file either still reads (only the $EndElements line lost its
@@ -282,7 +269,7 @@ TEST(Msh, EveryTruncationIsHandled) {
   const auto path = dir / "cut.msh";
   for (std::size_t size = 0; size < good.size(); ++size) {
     write_text(path, good.substr(0, size));
-    const std::string what = read_error(path);
+    const std::string what = read_mesh_error(path);
     if (what != "no error") {
       EXPECT_EQ(what.rfind(path.string() + ": ", 0), 0u) << size << ": " << what;
     }

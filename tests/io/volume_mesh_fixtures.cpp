@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "volmesh/core/convert.hpp"
+#include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
+#include "volmesh/io/mesh_io.hpp"
 
 namespace volmesh::test {
 
@@ -134,6 +136,19 @@ std::map<std::string, long> cell_type_counts(const PolyMesh& mesh) {
     }
   }
   return counts;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string read_mesh_error(const fs::path& path) {
+  try {
+    read_mesh(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 std::string file_bytes(const fs::path& path) {

@@ -30,6 +30,9 @@ void expect_same_mesh(const PolyMesh& expected, const PolyMesh& actual);
 std::map<std::string, long> cell_type_counts(const PolyMesh& mesh);
 
 std::string file_bytes(const std::filesystem::path& path);
+void write_text(const std::filesystem::path& path, const std::string& text);
+// read_mesh's InputError message, or "no error".
+std::string read_mesh_error(const std::filesystem::path& path);
 
 // Runs tests/io/external/<script> with Debian's python (which has meshio). Fails the test
 // with a hint when meshio is missing; returns the script's stdout.

@@ -34,9 +34,9 @@ void write_mesh(const PolyMesh& mesh, const std::filesystem::path& path,
 // Throws the InputError write_mesh would for a path of no known output format: checked
 // before a long run, so that a typo does not cost it.
 void require_writable_mesh_path(const std::filesystem::path& path);
-// Reads by extension: .vtu, .pvtu (a partitioned set, stitched: partitioned_io.hpp), .msh, or
-// an OpenFOAM case (a directory ending in .foam or holding constant/polyMesh, or its .foam
-// marker file).
+// Reads by extension: .vtu, .pvtu (a partitioned set, stitched: partitioned_io.hpp), .msh,
+// .mesh (MEDIT), .node or .ele (TetGen), or an OpenFOAM case (a directory ending in .foam or
+// holding constant/polyMesh, or its .foam marker file).
 PolyMesh read_mesh(const std::filesystem::path& path);
 
 bool is_mesh_file(const std::filesystem::path& path);
@@ -49,6 +49,10 @@ void write_msh(const PolyMesh& mesh, const std::filesystem::path& path);
 PolyMesh read_msh(const std::filesystem::path& path);
 
 void write_medit(const PolyMesh& mesh, const std::filesystem::path& path);
+// ASCII MEDIT: tetrahedra and hexahedra; references as write_medit writes them.
+PolyMesh read_medit(const std::filesystem::path& path);
+// TetGen's BASE.node and BASE.ele (and BASE.face when present), given either name.
+PolyMesh read_tetgen(const std::filesystem::path& path);
 void write_abaqus(const PolyMesh& mesh, const std::filesystem::path& path);
 void write_foam(const PolyMesh& mesh, const std::filesystem::path& case_dir);
 // ASCII constant/polyMesh (plain or .gz); cellZones "region_<r>" give regions, patches tags.
