@@ -3,6 +3,7 @@
 // VTK order (0-3 the bottom quad counter-clockwise seen from above, 4-7 above 0-3).
 #include <array>
 
+#include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/types.hpp"
 
 namespace volmesh {
@@ -14,16 +15,12 @@ namespace volmesh {
 //   corners 0, 2, 5, 7 and the inner tet 1-3-4-6 (the paper's T1245, T3427, T6572, T8754, T2457),
 //   corners 1, 3, 4, 6 and the inner tet 0-2-7-5 (T2316, T4138, T5861, T7683, T1386).
 // Each is ordered so that its volume is positive in the unit cube.
-inline constexpr std::array<std::array<int, 4>, 10> kHexCornerTets{{{0, 1, 3, 4},
-                                                                    {2, 3, 1, 6},
-                                                                    {5, 4, 6, 1},
-                                                                    {7, 6, 4, 3},
-                                                                    {1, 3, 4, 6},
-                                                                    {1, 2, 0, 5},
-                                                                    {3, 0, 2, 7},
-                                                                    {4, 7, 5, 0},
-                                                                    {6, 5, 7, 2},
-                                                                    {0, 2, 7, 5}}};
+// The corner tets are core's corner frames (kHexCornerFrames), grouped by split.
+inline constexpr std::array<std::array<int, 4>, 10> kHexCornerTets{
+    {kHexCornerFrames[0], kHexCornerFrames[2], kHexCornerFrames[5], kHexCornerFrames[7],
+     {1, 3, 4, 6},
+     kHexCornerFrames[1], kHexCornerFrames[3], kHexCornerFrames[4], kHexCornerFrames[6],
+     {0, 2, 7, 5}}};
 
 // Signed volumes of the ten tets of kHexCornerTets.
 std::array<double, 10> hex_corner_tet_volumes(const std::array<Vec3, 8>& corners);
