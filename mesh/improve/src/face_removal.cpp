@@ -106,8 +106,10 @@ int remove_faces(TetComplex& mesh, Index t, int face) {
   while (static_cast<int>(disk.size()) < kMaxFaces) {
     std::optional<Candidate> step;
     DiskFace step_face{};
-    for (const DiskFace& g : disk)
+    // By index and by copy: trying a face appends it to `disk`, which may reallocate.
+    for (std::size_t i = 0, faces = disk.size(); i < faces; ++i)
       for (int e = 0; e < 3; ++e) {
+        const DiskFace g = disk[i];
         const std::optional<DiskFace> n = neighbour(mesh, a, b, g, e);
         if (!n) continue;
         const bool known = std::any_of(disk.begin(), disk.end(),
