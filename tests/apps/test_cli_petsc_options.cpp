@@ -11,12 +11,15 @@ namespace volmesh {
 namespace {
 
 namespace fs = std::filesystem;
+
+// PETSc's solves start MPI: its leaks past finalize are suppressed as for the mpirun tests.
+class CliPetscOptions : public test::MpiTest {};
 using test::petsc_built;
 using test::run_volmesh;
 
 const std::string kWhere = "PETSc options go after the subcommand's own arguments, or after --";
 
-TEST(CliPetscOptions, APetscOptionBeforeTheArgumentsIsRefusedWithWhereItGoes) {
+TEST_F(CliPetscOptions, APetscOptionBeforeTheArgumentsIsRefusedWithWhereItGoes) {
   const fs::path dir = test::scratch_dir("petsc-options-refused");
   const fs::path out = dir / "x.vtu";
   const std::string problem = "--problem sine --method grid --domain builtin:box --level 3 "
@@ -34,7 +37,7 @@ TEST(CliPetscOptions, APetscOptionBeforeTheArgumentsIsRefusedWithWhereItGoes) {
   }
 }
 
-TEST(CliPetscOptions, PetscOptionsAtTheEndOrAfterTwoDashesReachPetsc) {
+TEST_F(CliPetscOptions, PetscOptionsAtTheEndOrAfterTwoDashesReachPetsc) {
   const fs::path dir = test::scratch_dir("petsc-options-placed");
   if (!petsc_built(dir)) GTEST_SKIP() << "built without PETSc";
   const fs::path out = dir / "x.vtu";
