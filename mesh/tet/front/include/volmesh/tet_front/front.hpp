@@ -20,12 +20,16 @@
 // the stats): one tet, a fan from a point that sees the whole cavity, or the projection mesher's
 // tets, merged even where they cut the cavity's faces by refining the tets outside to match;
 // with no projection direction whose tets all stay positive, InputError names the cavity.
+// Last, the mesh improver (volmesh/improve) raises its worst tets, the input triangles and the
+// surfaces between regions kept (the fallback's points inside outer input triangles or on
+// their edges may slide within them).
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/progress.hpp"
+#include "volmesh/improve/improve.hpp"
 #include "volmesh/tet/projection.hpp"
 
 namespace volmesh::tet {
@@ -37,20 +41,7 @@ struct FrontOptions {
   int aux_ratio = kDefaultAuxRatio;  // n: auxiliary points at h / n
   // A test hook: the front stops after this many tets per region, as if it stalled (-1: never).
   long long stop_after = -1;
-  bool improve = true;  // run the improvement pass (ImproveStats) on the finished mesh
-};
-
-// The quality improvement pass after the front and the fallback: 2-3, 3-2, 4-4 flips and
-// edge removals (rings of 5 to 7 tets), and smoothing of the nodes inside the regions, each made
-// only where it raises the minimum of the min dihedral-angle sine over the tets it touches.
-struct ImproveStats {
-  long long passes = 0;
-  long long flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, edge_removals = 0;
-  long long nodes_moved = 0;  // node moves (a node may move in several passes)
-  long long collapses = 0;    // interior nodes merged into a neighbour (edge collapse)
-  double min_dihedral_before = 0.0, min_dihedral_after = 0.0;  // degrees
-  double radius_edge_before = 0.0, radius_edge_after = 0.0;    // max radius-edge ratio
-  double seconds = 0.0;
+  bool improve = true;  // improve the finished mesh (volmesh/improve/improve.hpp)
 };
 
 struct FrontStats {
@@ -74,8 +65,8 @@ struct FrontStats {
   long long refined_tets = 0;
   long long split_boundary_faces = 0;
   long long steiner_points = 0;
-  ImproveStats improve;
-  // Seconds by stage: aux (the auxiliary points), front, fallback.
+  ::volmesh::improve::ImproveStats improve;  // the last pass (empty when FrontOptions::improve is off)
+  // Seconds by stage: front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
 };
 
