@@ -12,10 +12,11 @@
 //    else a new node at the face's barycentre + H along its normal, H = min(3 Vmax / S, √S)
 //    shrunk by 0.75 until it fits, in a ball of radius 2h/n free of deleted points;
 //  - a tet is refused if it holds a deleted auxiliary point strictly inside, a front node, is
-//    crossed by a front edge or crosses a front face (exact predicates, but a front edge at a
-//    shared corner within a sine of 1e-6 of a face's plane counts as in it), is not positive,
-//    or exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
-//    corner) is kept; the auxiliary points it covers are deleted and the front updated.
+//    crossed by a front edge or crosses a front face (exact predicates), is not positive,
+//    exceeds Vmax = 0.15 h^3, or leaves a gap flatter than a sine of 1e-6 against a front face
+//    at a shared corner (a shape rule); the best by volume / (largest product of the three
+//    edges at a corner) is kept; the auxiliary points it covers are deleted and the front
+//    updated.
 // When no face of the front can advance (a stall), the rest of the region is closed (counted in
 // the stats): one tet, a fan from a point that sees the whole cavity, or the projection mesher's
 // tets, merged even where they cut the cavity's faces by refining the tets outside to match;
