@@ -85,6 +85,21 @@ bool nearly_over(const Corner& s0, const Corner& s1, const std::array<Corner, 3>
   return shared0 ? nearly_over(t, s0.id, s1.p) : nearly_over(t, s1.id, s0.p);
 }
 
+// Whether `test` (segment, triangle) holds for an edge of the tet against the triangle or an
+// edge of the triangle against a face of the tet.
+template <class Test>
+bool any_edge_against(const std::array<Corner, 4>& tet, const std::array<Corner, 3>& tri,
+                      const Test& test) {
+  for (const auto& e : kTetEdges)
+    if (test(tet[e[0]], tet[e[1]], tri)) return true;
+  for (const auto& f : kTetFaces) {
+    const std::array<Corner, 3> face{tet[f[0]], tet[f[1]], tet[f[2]]};
+    for (int e = 0; e < 3; ++e)
+      if (test(tri[e], tri[(e + 1) % 3], face)) return true;
+  }
+  return false;
+}
+
 // Whether p lies in the closed positive tet.
 bool in_closed_tet(const std::array<Corner, 4>& t, const Vec3& p) {
   for (int i = 0; i < 4; ++i) {
@@ -156,25 +171,17 @@ bool tet_meets_triangle(const std::array<Corner, 4>& tet, const std::array<Corne
   if (separated(tet, tri, tet_shared, tri_shared, shared > 0)) return false;
   for (const Corner& v : tri)
     if (!is_one_of(v.id, tet.data(), 4) && in_closed_tet(tet, v.p)) return true;
-  for (const auto& e : kTetEdges)
-    if (segment_meets_triangle(tet[e[0]], tet[e[1]], tri)) return true;
-  for (const auto& f : kTetFaces) {
-    const std::array<Corner, 3> face{tet[f[0]], tet[f[1]], tet[f[2]]};
-    for (int e = 0; e < 3; ++e)
-      if (segment_meets_triangle(tri[e], tri[(e + 1) % 3], face)) return true;
-  }
-  return false;
+  return any_edge_against(tet, tri, [](const Corner& s0, const Corner& s1,
+                                       const std::array<Corner, 3>& t) {
+    return segment_meets_triangle(s0, s1, t);
+  });
 }
 
 bool leaves_flat_gap(const std::array<Corner, 4>& tet, const std::array<Corner, 3>& tri) {
-  for (const auto& e : kTetEdges)
-    if (nearly_over(tet[e[0]], tet[e[1]], tri)) return true;
-  for (const auto& f : kTetFaces) {
-    const std::array<Corner, 3> face{tet[f[0]], tet[f[1]], tet[f[2]]};
-    for (int e = 0; e < 3; ++e)
-      if (nearly_over(tri[e], tri[(e + 1) % 3], face)) return true;
-  }
-  return false;
+  return any_edge_against(tet, tri, [](const Corner& s0, const Corner& s1,
+                                       const std::array<Corner, 3>& t) {
+    return nearly_over(s0, s1, t);
+  });
 }
 
 }  // namespace volmesh::tet::front
