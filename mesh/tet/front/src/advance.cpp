@@ -33,8 +33,6 @@ constexpr double kMinQuality = 1e-3;
 // good (1 = regular); a worse one only when no new node does better. The paper takes any
 // existing node first; this keeps the slivers four front nodes can make out of the mesh.
 constexpr double kGoodQuality = 0.35;
-// Front faces fetched around a tet's box: a margin for the faces' own extent is not needed
-// (the grid lists a face in every cell its box overlaps).
 
 // An oriented triangle with its smallest corner first: the same key for each rotation.
 Tri canonical(const Tri& t) {
@@ -260,6 +258,7 @@ class Front {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
+    // No margin for the faces' own extent: the grid lists a face in every cell its box overlaps.
     faces_near(grid_, lo, hi, live_, nearby_);
     for (const Index g : nearby_)
       if (face_stamp_[g] != face_query_ && meets(g)) return false;
