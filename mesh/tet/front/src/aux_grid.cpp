@@ -53,9 +53,8 @@ Barycentric barycentric(const std::array<Vec3, 4>& t) {
   return {m.inverse(), t[0]};
 }
 
-// Calls f(id, point) for every grid point in the tet's box.
-template <class F>
-void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
+// The grid's index ranges over the tet's box: i0, i1, j0, j1, k0, k1.
+std::array<long long, 6> box_ranges(const AuxGrid& g, const std::array<Vec3, 4>& t) {
   Vec3 lo = t[0], hi = t[0];
   for (const Vec3& p : t) {
     lo = lo.cwiseMin(p);
@@ -64,6 +63,13 @@ void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
   const auto [i0, i1] = range(g, 0, lo.x(), hi.x());
   const auto [j0, j1] = range(g, 1, lo.y(), hi.y());
   const auto [k0, k1] = range(g, 2, lo.z(), hi.z());
+  return {i0, i1, j0, j1, k0, k1};
+}
+
+// Calls f(id, point) for every grid point in the tet's box.
+template <class F>
+void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
+  const auto [i0, i1, j0, j1, k0, k1] = box_ranges(g, t);
   for (long long k = k0; k <= k1; ++k)
     for (long long j = j0; j <= j1; ++j)
       for (long long i = i0; i <= i1; ++i)
@@ -81,14 +87,7 @@ constexpr double kRowSlack = 1e-6;
 template <class F>
 void for_each_in_tet_rows(const AuxGrid& g, const std::array<Vec3, 4>& t, const Barycentric& bary,
                           F&& f) {
-  Vec3 lo = t[0], hi = t[0];
-  for (const Vec3& p : t) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const auto [i0, i1] = range(g, 0, lo.x(), hi.x());
-  const auto [j0, j1] = range(g, 1, lo.y(), hi.y());
-  const auto [k0, k1] = range(g, 2, lo.z(), hi.z());
+  const auto [i0, i1, j0, j1, k0, k1] = box_ranges(g, t);
   if (i0 > i1) return;
   // Each coordinate's change per step along x.
   const std::array<double, 4> at0 = bary(g.point(i0, j0, k0)), at1 = bary(g.point(i0 + 1, j0, k0));
