@@ -1,6 +1,6 @@
-// volmesh mesh tet-front end to end: the paper's example with its figures in --json, a valid
-// mesh as re-read with the enclosed volume, the fallback forced, and the refusals (exit 1, one
-// line, no output). Same bytes for any thread count: CliMesh.SameBytesForOneAndTwoThreads.
+// volmesh mesh tet-front end to end: the paper's example with its figures in --json (the
+// improver's among them), a valid mesh as re-read with the enclosed volume, the fallback
+// forced, and the refusals (exit 1, one line, no output). Same bytes for any thread count: CliMesh.SameBytesForOneAndTwoThreads.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -34,8 +34,19 @@ TEST(CliTetFront, MeshesThePapersCubeInclusion) {
   EXPECT_EQ(j["aux_ratio"], 12);
   EXPECT_EQ(j["front"]["aux_deleted"], j["front"]["aux_points"]);  // the domain exhausted
   EXPECT_GT(j["shape"]["min_dihedral_deg"].get<double>(), 0.0);
-  for (const char* stage : {"check", "front", "fallback"})
+  for (const char* stage : {"check", "front", "fallback", "improve"})
     EXPECT_TRUE(j["stage_seconds"][stage].is_number()) << stage;
+  // The improver's figures: before and after the last pass, the after those of the mesh.
+  const auto& improve = j["improve"];
+  EXPECT_EQ(improve["after"]["tets"], j["tets"]);
+  EXPECT_EQ(improve["after"]["min_dihedral_deg"], j["shape"]["min_dihedral_deg"]);
+  EXPECT_EQ(improve["after"]["max_dihedral_deg"], j["shape"]["max_dihedral_deg"]);
+  EXPECT_GE(improve["after"]["min_dihedral_deg"].get<double>(),
+            improve["before"]["min_dihedral_deg"].get<double>());
+  EXPECT_EQ(improve["after"]["tets_below_10_deg"], 0);
+  EXPECT_GT(improve["before"]["tets_below_10_deg"], 0);
+  EXPECT_GT(improve["operations"]["smoothed"].get<long long>(), 0);
+  EXPECT_GT(improve["passes"].get<int>(), 0);
   const PolyMesh mesh = read_mesh(out);
   test::expect_every_cell(mesh, CellShape::Tetrahedron);
   const ValidityReport v = check_validity(mesh);

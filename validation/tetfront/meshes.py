@@ -17,6 +17,7 @@ reverses the order of all tets of a mesh whose signed volumes are mostly negativ
 mesh whose tets disagree as it is, so that `volmesh check` reports the inverted ones.
 """
 import json
+import math
 import sys
 import time
 from fractions import Fraction
@@ -102,6 +103,13 @@ def netgen(surface, maxh, target):
     print(len(mesh.Elements3D()), seconds)
 
 
+def regular_edge(surface, tets):
+    """The edge of the regular tet whose volume is the mean over `tets` tets filling the
+    surface: V = h^3 / (6 sqrt 2)."""
+    mean = float(enclosed_volume(surface)) / tets
+    return (6.0 * math.sqrt(2.0) * mean) ** (1.0 / 3.0)
+
+
 def sweepable(info):
     surface = json.loads(Path(info).read_text()).get("surface", {})
     return surface.get("closed") and surface.get("manifold") \
@@ -112,6 +120,8 @@ def main():
     kind, args = sys.argv[1], sys.argv[2:]
     if kind == "edge":
         print(repr(mean_edge(args[0])))
+    elif kind == "regular-edge":
+        print(repr(regular_edge(args[0], int(args[1]))))
     elif kind == "volume":
         print(repr(float(enclosed_volume(args[0]))))
     elif kind == "stl":
@@ -124,7 +134,7 @@ def main():
     elif kind == "sweepable":
         sys.exit(0 if sweepable(args[0]) else 1)
     else:
-        sys.exit("usage: meshes.py edge|volume|stl|vtu|netgen|sweepable ...")
+        sys.exit("usage: meshes.py edge|regular-edge|volume|stl|vtu|netgen|sweepable ...")
 
 
 if __name__ == "__main__":

@@ -19,6 +19,8 @@
 #   TETFRONT_SIZES="knot1=0.03 ..."          ours' --size per model (default: matched)
 #   TETFRONT_MATCH_PASSES=N       reruns of ours at a corrected size while its tet count is
 #                                 off TetGen's by more than 1.5x (default 1)
+#   TETFRONT_SIZE_FROM=volume     ours at the edge of the regular tet of TetGen's mean tet
+#                                 volume, no rerun (default: the mean edge, then matched)
 #   TETFRONT_SWEEP="all" | "NAME ..."        the sweep's surfaces (default all)
 #   TETFRONT_SWEEP_TIMEOUT=S      per sweep run (default 120)
 #   TETFRONT_KEEP_MESHES=1        keep the .vtu files (default: deleted once checked)
@@ -39,6 +41,7 @@ MODELS=${TETFRONT_MODELS:-elephant fandisk knot1 anchor femur armadillo}
 TIMEOUT=${TETFRONT_TIMEOUT:-300}
 SIZES=${TETFRONT_SIZES:-}
 MATCH_PASSES=${TETFRONT_MATCH_PASSES:-1}
+SIZE_FROM=${TETFRONT_SIZE_FROM:-edge}
 SWEEP=${TETFRONT_SWEEP:-all}
 SWEEP_TIMEOUT=${TETFRONT_SWEEP_TIMEOUT:-120}
 KEEP=${TETFRONT_KEEP_MESHES:-0}
@@ -148,13 +151,21 @@ try: print(json.load(open(sys.argv[1]))['quality']['tets'])
 except Exception: print(0)" "$OUT/$1.check.json"
 }
 
-# Ours at the given size, else at the mean edge of the surface's triangles, then rerun at
+# Ours at the given size, else at the regular tet's edge for TetGen's mean tet volume
+# (TETFRONT_SIZE_FROM=volume), else at the mean edge of the surface's triangles, then rerun at
 # h (ours / TetGen's tets)^(1/3) while the counts differ by more than MATCH_TOLERANCE.
 ours_matched() {  # model
   local h pass=0 target tets
   h=$(size_of "$1")
-  [ -n "$h" ] || h=$("$PY" "$HERE/meshes.py" edge "$MESHES/$1.off")
   target=$(tets_of "tetgen-$1")
+  if [ -z "$h" ] && [ "$SIZE_FROM" = volume ] && [ "$target" -gt 0 ]; then
+    h=$("$PY" "$HERE/meshes.py" regular-edge "$MESHES/$1.off" "$target")
+    echo "tet-front $1 --size $h"
+    ours "ours-$1" "$MESHES/$1.off" "$h" "$TIMEOUT"
+    echo "$h $(tets_of "ours-$1")" > "$OUT/ours-$1.sizes"
+    return 0
+  fi
+  [ -n "$h" ] || h=$("$PY" "$HERE/meshes.py" edge "$MESHES/$1.off")
   : > "$OUT/ours-$1.sizes"
   while :; do
     echo "tet-front $1 --size $h"

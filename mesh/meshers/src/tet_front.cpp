@@ -47,6 +47,33 @@ nlohmann::json shape_of(const TetMesh& m) {
            {{"bin_deg", kDihedralBinDegrees}, {"counts", low.histogram.counts}}}};
 }
 
+nlohmann::json quality_json(const improve::QualitySummary& q) {
+  return {{"tets", q.tets},
+          {"points", q.points},
+          {"min_dihedral_deg", q.min_dihedral_deg},
+          {"max_dihedral_deg", q.max_dihedral_deg},
+          {"tets_below_10_deg", q.below_10_degrees},
+          {"max_radius_edge", q.max_radius_edge}};
+}
+
+// The improver's figures as `volmesh improve --json` names them.
+nlohmann::json improve_json(const improve::ImproveStats& s) {
+  const improve::OperationCounts& o = s.operations;
+  return {{"before", quality_json(s.before)},
+          {"after", quality_json(s.after)},
+          {"operations", {{"smoothed", o.smoothed},
+                          {"slid", o.slid},
+                          {"flips_3_2", o.flips_3_2},
+                          {"flips_4_4", o.flips_4_4},
+                          {"edge_removals", o.edge_removals},
+                          {"flips_2_3", o.flips_2_3},
+                          {"face_removals", o.face_removals},
+                          {"contractions", o.contractions},
+                          {"insertions", o.insertions}}},
+          {"passes", s.passes},
+          {"seconds", s.seconds}};
+}
+
 // Each surface remeshed to edge h (surfacing::remesh_isotropic); the figures over all of them.
 nlohmann::json remesh(std::vector<tet::ProjectionSurface>& surfaces, double h) {
   long long sharp_edges = 0, before = 0;
@@ -132,18 +159,7 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
                              {"refined_tets", s.refined_tets},
                              {"split_boundary_faces", s.split_boundary_faces},
                              {"steiner_points", s.steiner_points}}},
-               {"improve", {{"passes", s.improve.passes},
-                            {"flips", {{"2-3", s.improve.flips_2_3},
-                                       {"3-2", s.improve.flips_3_2},
-                                       {"4-4", s.improve.flips_4_4},
-                                       {"edge_removal", s.improve.edge_removals}}},
-                            {"nodes_moved", s.improve.nodes_moved},
-                            {"collapses", s.improve.collapses},
-                            {"min_dihedral_deg", {{"before", s.improve.min_dihedral_before},
-                                                  {"after", s.improve.min_dihedral_after}}},
-                            {"radius_edge_max", {{"before", s.improve.radius_edge_before},
-                                                 {"after", s.improve.radius_edge_after}}},
-                            {"seconds", s.improve.seconds}}},
+               {"improve", improve_json(s.improve)},
                {"shape", shape_of(front.mesh)},
                {"stage_seconds", stages}};
   return r;

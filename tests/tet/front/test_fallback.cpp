@@ -1,5 +1,6 @@
 // The fallback on forced stalls (stop_after) where the projection mesher cuts the cavity's
-// faces: the tets around the cavity are refined to match, and the mesh stays valid.
+// faces: the tets around the cavity are refined to match, and the mesh stays valid; a cavity
+// around a hole (another region) closes too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/validity.hpp"
+#include "front_surfaces.hpp"
+#include "volmesh/domain/builtin.hpp"
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/tet_front/front.hpp"
@@ -69,6 +72,23 @@ TEST_P(StoppedFront, IsClosedByRefiningAroundTheCutFaces) {
 
 INSTANTIATE_TEST_SUITE_P(Models, StoppedFront,
                          testing::Values(Case{"tripod.off", 0.5, 20}));
+
+// The paper's example stopped early: the outer region's cavity has the inner cube as a hole,
+// which the projection takes outward from the hole. Both regions close conformingly, with
+// their volumes.
+TEST(StoppedFront, ClosesACavityWithAHole) {
+  const auto surfaces = test::surfaces_of(builtin_surfaces("cube-inclusion"));
+  for (const long long stop_after : {0LL, 10LL, 40LL}) {
+    const FrontResult r =
+        tetrahedralize_by_front(surfaces, {.size = 2.0, .stop_after = stop_after, .improve = false});
+    EXPECT_EQ(r.stats.stalls, 2) << stop_after;
+    const ValidityReport v = check_validity(to_poly_mesh(r.mesh));
+    EXPECT_TRUE(v.valid()) << stop_after << ": " << (v.problems.empty() ? "" : v.problems.front());
+    ASSERT_EQ(v.region_volume.size(), 2u);
+    EXPECT_NEAR(v.region_volume.at(2), 27.0, 27.0 * 1e-12);
+    EXPECT_NEAR(v.region_volume.at(1), 512.0 - 27.0, 512.0 * 1e-12);
+  }
+}
 
 }  // namespace
 }  // namespace volmesh::tet

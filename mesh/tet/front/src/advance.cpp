@@ -33,8 +33,6 @@ constexpr double kMinQuality = 1e-3;
 // good (1 = regular); a worse one only when no new node does better. The paper takes any
 // existing node first; this keeps the slivers four front nodes can make out of the mesh.
 constexpr double kGoodQuality = 0.35;
-// Front faces fetched around a tet's box: a margin for the faces' own extent is not needed
-// (the grid lists a face in every cell its box overlaps).
 
 // An oriented triangle with its smallest corner first: the same key for each rotation.
 Tri canonical(const Tri& t) {
@@ -225,28 +223,46 @@ class Front {
     return quality(p, volume);
   }
 
-  // Whether tet (t, d) with d at q, positive, passes the tests beyond its shape.
+  // Whether tet (t, d) with d at q, positive, passes the tests beyond its shape: the cheapest
+  // rejections first (a front face on it facing away, a deleted auxiliary point inside), then
+  // the front faces at its corners, reached through the front's adjacency (where most of the
+  // rejections are; the flat-gap rule too), and last the faces near its box that share no
+  // corner with it.
   bool passes(const Tri& t, Index d, const Vec3& q, Tests tests) {
     const std::array<Vec3, 4> p{pts_[t[0]], pts_[t[1]], pts_[t[2]], q};
     // A front face on the tet facing out of it: the other side of it is meshed already.
     const Tet corners{t[0], t[1], t[2], d};
     for (const auto& f : kTetFaces)
       if (by_key_.count(canonical({corners[f[0]], corners[f[1]], corners[f[2]]}))) return false;
+    if (tests == Tests::all && deleted_strictly_inside(aux_, p)) return false;
     const std::array<Corner, 4> tet{Corner{p[0], t[0]}, Corner{p[1], t[1]}, Corner{p[2], t[2]},
                                     Corner{q, d}};
+    const auto corners_of_face = [&](Index g) {
+      const Tri& u = faces_[g];
+      return std::array<Corner, 3>{Corner{pts_[u[0]], u[0]}, Corner{pts_[u[1]], u[1]},
+                                   Corner{pts_[u[2]], u[2]}};
+    };
+    const auto meets = [&](Index g) { return tet_meets_triangle(tet, corners_of_face(g)); };
+    ++face_query_;
+    face_stamp_.resize(faces_.size(), 0);
+    for (const Index v : corners) {
+      if (static_cast<std::size_t>(v) >= node_faces_.size()) continue;  // a new node
+      for (const Index g : node_faces_[v]) {
+        if (face_stamp_[g] == face_query_) continue;
+        face_stamp_[g] = face_query_;
+        if (meets(g) || leaves_flat_gap(tet, corners_of_face(g))) return false;
+      }
+    }
     Vec3 lo = p[0], hi = p[0];
     for (const Vec3& x : p) {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
+    // No margin for the faces' own extent: the grid lists a face in every cell its box overlaps.
     faces_near(grid_, lo, hi, live_, nearby_);
-    for (const Index g : nearby_) {
-      const Tri& u = faces_[g];
-      if (tet_meets_triangle(tet, {Corner{pts_[u[0]], u[0]}, Corner{pts_[u[1]], u[1]},
-                                   Corner{pts_[u[2]], u[2]}}))
-        return false;
-    }
-    return tests != Tests::all || !deleted_strictly_inside(aux_, p);
+    for (const Index g : nearby_)
+      if (face_stamp_[g] != face_query_ && meets(g)) return false;
+    return true;
   }
 
   void add_tet(const Tet& tet, RegionFront& out) {
@@ -273,7 +289,8 @@ class Front {
     // A failed face may advance once the front near it has changed: within reach of a
     // fourth corner of it.
     const Vec3 candidates = Vec3::Constant(kCandidateRadius * h_);
-    for (const Index g : faces_near(grid_, lo - candidates, hi + candidates, live_))
+    faces_near(grid_, lo - candidates, hi + candidates, live_, nearby_);
+    for (const Index g : nearby_)
       if (live_[g] && failed_[g]) {
         failed_[g] = 0;
         --failed_live_;
@@ -282,10 +299,12 @@ class Front {
     // deleted in it.
     const double radius = kSolidAngleRadius * h_;
     const Vec3 reach = Vec3::Constant(radius);
-    std::set<Index> stale;
-    for (const Index g : faces_near(grid_, lo - reach, hi + reach, live_))
-      stale.insert(faces_[g].begin(), faces_[g].end());
-    for (const Index v : stale) {
+    faces_near(grid_, lo - reach, hi + reach, live_, nearby_);
+    stale_.clear();
+    for (const Index g : nearby_) stale_.insert(stale_.end(), faces_[g].begin(), faces_[g].end());
+    std::sort(stale_.begin(), stale_.end());
+    stale_.erase(std::unique(stale_.begin(), stale_.end()), stale_.end());
+    for (const Index v : stale_) {
       long long gone = 0;
       for (const Vec3& x : deleted)
         if ((x - pts_[v]).squaredNorm() <= radius * radius) ++gone;
@@ -353,8 +372,11 @@ class Front {
   // Buffers reused by the candidate tests.
   std::vector<Index> nearby_;
   std::vector<std::pair<double, Index>> ranked_;
+  std::vector<Index> stale_;  // add_tet's front nodes near the new tet, sorted
   std::vector<unsigned> node_stamp_;  // by point: the nodes_near query that last listed it
   unsigned node_query_ = 0;
+  std::vector<unsigned> face_stamp_;  // by face: the passes() query that last tested it
+  unsigned face_query_ = 0;
 };
 
 // Progress is reported every this many tets.

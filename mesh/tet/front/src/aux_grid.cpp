@@ -53,9 +53,8 @@ Barycentric barycentric(const std::array<Vec3, 4>& t) {
   return {m.inverse(), t[0]};
 }
 
-// Calls f(id, point) for every grid point in the tet's box.
-template <class F>
-void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
+// The grid's index ranges over the tet's box: i0, i1, j0, j1, k0, k1.
+std::array<long long, 6> box_ranges(const AuxGrid& g, const std::array<Vec3, 4>& t) {
   Vec3 lo = t[0], hi = t[0];
   for (const Vec3& p : t) {
     lo = lo.cwiseMin(p);
@@ -64,10 +63,56 @@ void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
   const auto [i0, i1] = range(g, 0, lo.x(), hi.x());
   const auto [j0, j1] = range(g, 1, lo.y(), hi.y());
   const auto [k0, k1] = range(g, 2, lo.z(), hi.z());
+  return {i0, i1, j0, j1, k0, k1};
+}
+
+// Calls f(id, point) for every grid point in the tet's box.
+template <class F>
+void for_each_in_box(const AuxGrid& g, const std::array<Vec3, 4>& t, F&& f) {
+  const auto [i0, i1, j0, j1, k0, k1] = box_ranges(g, t);
   for (long long k = k0; k <= k1; ++k)
     for (long long j = j0; j <= j1; ++j)
       for (long long i = i0; i <= i1; ++i)
         if (f(g.at(i, j, k), g.point(i, j, k))) return;
+}
+
+// Barycentric slack of the rows' ranges below: far looser than kMargin and than the rounding
+// of a barycentric coordinate, so that a range never leaves out a point the test would keep.
+constexpr double kRowSlack = 1e-6;
+
+// Calls f(id, point) for the grid points in the tet's box whose row (along x) runs inside the
+// tet, each row cut to the stretch where every barycentric coordinate, linear along it, is
+// above -kRowSlack (widened by a point each way): the points of the box the tet holds, and a
+// few more.
+template <class F>
+void for_each_in_tet_rows(const AuxGrid& g, const std::array<Vec3, 4>& t, const Barycentric& bary,
+                          F&& f) {
+  const auto [i0, i1, j0, j1, k0, k1] = box_ranges(g, t);
+  if (i0 > i1) return;
+  // Each coordinate's change per step along x.
+  const std::array<double, 4> at0 = bary(g.point(i0, j0, k0)), at1 = bary(g.point(i0 + 1, j0, k0));
+  std::array<double, 4> slope{};
+  for (int m = 0; m < 4; ++m) slope[m] = at1[m] - at0[m];
+  for (long long k = k0; k <= k1; ++k)
+    for (long long j = j0; j <= j1; ++j) {
+      const std::array<double, 4> start = bary(g.point(i0, j, k));
+      double first = static_cast<double>(i0), last = static_cast<double>(i1);
+      for (int m = 0; m < 4 && first <= last; ++m) {
+        // start[m] + slope[m] (i - i0) > -kRowSlack.
+        const double excess = start[m] + kRowSlack;
+        if (slope[m] > 0.0)
+          first = std::max(first, static_cast<double>(i0) - excess / slope[m] - 1.0);
+        else if (slope[m] < 0.0)
+          last = std::min(last, static_cast<double>(i0) - excess / slope[m] + 1.0);
+        else if (excess <= 0.0)
+          last = first - 1.0;
+      }
+      if (first > last) continue;
+      const long long from = std::max(i0, static_cast<long long>(std::floor(first)));
+      const long long to = std::min(i1, static_cast<long long>(std::ceil(last)));
+      for (long long i = from; i <= to; ++i)
+        if (f(g.at(i, j, k), g.point(i, j, k))) return;
+    }
 }
 
 }  // namespace
@@ -171,7 +216,7 @@ bool deleted_in_ball(const AuxGrid& g, const Vec3& centre, double radius) {
 bool deleted_strictly_inside(const AuxGrid& g, const std::array<Vec3, 4>& tet) {
   const Barycentric bary = barycentric(tet);
   bool found = false;
-  for_each_in_box(g, tet, [&](long long id, const Vec3& p) {
+  for_each_in_tet_rows(g, tet, bary, [&](long long id, const Vec3& p) {
     if (g.alive(id)) return false;
     const auto l = bary(p);
     found = std::all_of(l.begin(), l.end(), [](double x) { return x > kMargin; });

@@ -210,7 +210,9 @@ void close_cavity(TetMesh& mesh, Index label, const std::vector<Tri>& current,
         }
         lt[i] = it->second;
       }
-      s.surface.triangles.push_back(lt);
+      // The projection takes each surface outward from its own inside: a hole's (odd depth)
+      // faces point out of it, into the cavity, as the front's faces do.
+      s.surface.triangles.push_back(depth % 2 == 0 ? lt : reversed(lt));
       outward.push_back({offset + lt[0], offset + lt[1], offset + lt[2]});
     }
     surfaces.push_back(std::move(s));

@@ -1,5 +1,6 @@
 // tetrahedralize_by_front: one front per surface (its inside, less the surfaces nested
-// directly in it), then the stalled cavities closed (fallback.hpp).
+// directly in it), then the stalled cavities closed (fallback.hpp), then the mesh improved
+// (volmesh/improve).
 #include "volmesh/tet_front/front.hpp"
 
 #include <cmath>
@@ -9,10 +10,11 @@
 #include "advance.hpp"
 #include "aux_grid.hpp"
 #include "fallback.hpp"
-#include "improve.hpp"
 #include "nesting.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/improve/improve.hpp"
+#include "volmesh/improve/slides.hpp"
 
 namespace volmesh::tet {
 
@@ -25,6 +27,33 @@ constexpr int kBisections = 40;
 // Significant digits of the sizes and counts in the messages.
 constexpr int kDigits = 4;
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+// The share of the progress bar the improver takes, after the fronts.
+constexpr double kImproveShare = 0.2;
+
+// The outermost surfaces' triangles as one surface: the boundary the fallback's points on it
+// may slide in.
+TriSurface outer_boundary(const std::vector<ProjectionSurface>& surfaces) {
+  TriSurface out;
+  for (const ProjectionSurface& s : surfaces) {
+    if (!s.outermost) continue;
+    const Index first = out.num_points();
+    out.points.insert(out.points.end(), s.surface.points.begin(), s.surface.points.end());
+    for (const Tri& t : s.surface.triangles)
+      out.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  }
+  return out;
+}
+
+// Improves the finished mesh, whose tets are labelled by the surface whose region they fill:
+// every surface's triangles (or their pieces) then lie between two labels or on the boundary,
+// so the improver keeps them all, even between two surfaces of one region.
+improve::ImproveStats improve_front_mesh(TetMesh& m, const std::vector<ProjectionSurface>& surfaces,
+                                         const Progress& progress) {
+  improve::ImproveOptions options;
+  options.slides = improve::slides_on_surface(m, outer_boundary(surfaces));
+  options.progress = progress;
+  return improve::improve_tet_mesh(m, options);
+}
 
 std::string text(double x) {
   std::ostringstream out;
@@ -84,8 +113,10 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
                        options.size, options.aux_ratio, lo, hi);
   }
   const std::vector<Index> parent = front::parents(m.points, outward);
+  const double front_share = options.improve ? 1.0 - kImproveShare : 1.0;
   double front_seconds = 0.0, fallback_seconds = 0.0;
   std::vector<std::vector<Tri>> cavities(surfaces.size());
+  // Tets are labelled by their surface's index until the end (improve_front_mesh).
   for (std::size_t s = 0; s < surfaces.size(); ++s) {
     const auto clock = Clock::now();
     std::vector<Tri> faces;
@@ -93,10 +124,11 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     for (std::size_t c = 0; c < surfaces.size(); ++c)
       if (parent[c] == static_cast<Index>(s))
         faces.insert(faces.end(), outward[c].begin(), outward[c].end());
-    const double begin = double(s) / double(surfaces.size());
+    const double begin = front_share * double(s) / double(surfaces.size());
     front::RegionFront region = front::advance_front(
         m.points, faces, options,
-        part_of(progress, begin, begin + 1.0 / double(surfaces.size()), surfaces[s].name + ": "));
+        part_of(progress, begin, begin + front_share / double(surfaces.size()),
+                surfaces[s].name + ": "));
     r.stats.front_tets += static_cast<long long>(region.tets.size());
     r.stats.new_nodes += region.new_nodes;
     r.stats.existing_node_tets += region.existing_node_tets;
@@ -104,7 +136,7 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     r.stats.aux_points += region.aux_points;
     r.stats.aux_deleted += region.aux_deleted;
     m.cells.insert(m.cells.end(), region.tets.begin(), region.tets.end());
-    m.cell_region.insert(m.cell_region.end(), region.tets.size(), surfaces[s].label);
+    m.cell_region.insert(m.cell_region.end(), region.tets.size(), static_cast<Index>(s));
     cavities[s] = std::move(region.cavity);
     front_seconds += seconds_since(clock);
   }
@@ -119,7 +151,7 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
       for (const Tri& t : surface) splits.resolve(t, loose);
     for (std::size_t o = s + 1; o < surfaces.size(); ++o)
       for (const Tri& t : cavities[o]) splits.resolve(t, loose);
-    front::close_cavity(m, surfaces[s].label, cavities[s], loose, splits, r.stats);
+    front::close_cavity(m, static_cast<Index>(s), cavities[s], loose, splits, r.stats);
   }
   fallback_seconds += seconds_since(clock);
   for (std::size_t s = 0; s < surfaces.size(); ++s) {
@@ -132,16 +164,10 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     }
     m.boundary_tag.resize(m.boundary_faces.size(), static_cast<Index>(s));
   }
-  if (options.improve) {
-    // The surfaces' triangles as the fallback left them: pieces where it cut them, whose new
-    // corners lie on the surface and are pinned with the rest.
-    std::vector<Tri> kept;
-    for (const std::vector<Tri>& tris : outward)
-      for (const Tri& t : tris) splits.resolve(t, kept);
-    Index surface_points = 0;
-    for (const ProjectionSurface& s : surfaces) surface_points += s.surface.num_points();
-    r.stats.improve = front::improve_mesh(m, surface_points, kept);
-  }
+  if (options.improve)
+    r.stats.improve =
+        improve_front_mesh(m, surfaces, part_of(progress, front_share, 1.0));
+  for (Index& region : m.cell_region) region = surfaces[region].label;
   r.stats.tets = m.num_cells();
   r.stats.nodes = m.num_points();
   r.stats.seconds = {{"front", front_seconds}, {"fallback", fallback_seconds}};

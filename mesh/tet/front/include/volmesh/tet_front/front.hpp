@@ -12,20 +12,25 @@
 //    else a new node at the face's barycentre + H along its normal, H = min(3 Vmax / S, √S)
 //    shrunk by 0.75 until it fits, in a ball of radius 2h/n free of deleted points;
 //  - a tet is refused if it holds a deleted auxiliary point strictly inside, a front node, is
-//    crossed by a front edge or crosses a front face (exact predicates, but a front edge at a
-//    shared corner within a sine of 1e-6 of a face's plane counts as in it), is not positive,
-//    or exceeds Vmax = 0.15 h^3; the best by volume / (largest product of the three edges at a
-//    corner) is kept; the auxiliary points it covers are deleted and the front updated.
+//    crossed by a front edge or crosses a front face (exact predicates), is not positive,
+//    exceeds Vmax = 0.15 h^3, or leaves a gap flatter than a sine of 1e-6 against a front face
+//    at a shared corner (a shape rule); the best by volume / (largest product of the three
+//    edges at a corner) is kept; the auxiliary points it covers are deleted and the front
+//    updated.
 // When no face of the front can advance (a stall), the rest of the region is closed (counted in
 // the stats): one tet, a fan from a point that sees the whole cavity, or the projection mesher's
 // tets, merged even where they cut the cavity's faces by refining the tets outside to match;
 // with no projection direction whose tets all stay positive, InputError names the cavity.
+// Last, the mesh improver (volmesh/improve) raises its worst tets, the input triangles and the
+// surfaces between regions kept (the fallback's points inside outer input triangles or on
+// their edges may slide within them).
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/progress.hpp"
+#include "volmesh/improve/improve.hpp"
 #include "volmesh/tet/projection.hpp"
 
 namespace volmesh::tet {
@@ -37,20 +42,7 @@ struct FrontOptions {
   int aux_ratio = kDefaultAuxRatio;  // n: auxiliary points at h / n
   // A test hook: the front stops after this many tets per region, as if it stalled (-1: never).
   long long stop_after = -1;
-  bool improve = true;  // run the improvement pass (ImproveStats) on the finished mesh
-};
-
-// The quality improvement pass after the front and the fallback: 2-3, 3-2, 4-4 flips and
-// edge removals (rings of 5 to 7 tets), and smoothing of the nodes inside the regions, each made
-// only where it raises the minimum of the min dihedral-angle sine over the tets it touches.
-struct ImproveStats {
-  long long passes = 0;
-  long long flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, edge_removals = 0;
-  long long nodes_moved = 0;  // node moves (a node may move in several passes)
-  long long collapses = 0;    // interior nodes merged into a neighbour (edge collapse)
-  double min_dihedral_before = 0.0, min_dihedral_after = 0.0;  // degrees
-  double radius_edge_before = 0.0, radius_edge_after = 0.0;    // max radius-edge ratio
-  double seconds = 0.0;
+  bool improve = true;  // improve the finished mesh (volmesh/improve/improve.hpp)
 };
 
 struct FrontStats {
@@ -74,8 +66,8 @@ struct FrontStats {
   long long refined_tets = 0;
   long long split_boundary_faces = 0;
   long long steiner_points = 0;
-  ImproveStats improve;
-  // Seconds by stage: aux (the auxiliary points), front, fallback.
+  ::volmesh::improve::ImproveStats improve;  // the last pass (empty when FrontOptions::improve is off)
+  // Seconds by stage: front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
 };
 
