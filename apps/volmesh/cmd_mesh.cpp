@@ -71,7 +71,8 @@ int run_mesh(const MeshOptions& opt) {
 
   const PolyMesh& mesh = result.result.mesh;
   if (opt.json) {
-    nlohmann::json j = mesh_summary(opt.method, request, result, validity);
+    nlohmann::json j =
+        mesh_summary(opt.method, request, mesh, result.result.summary, result.seconds, validity);
     j["output"] = opt.output;
     j["total_seconds"] = seconds_since(start);
     if (tets) j["decomposed"] = {{"tetrahedra", tets->num_cells()}, {"points", tets->num_points()}};

@@ -53,7 +53,8 @@ nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validi
 }
 
 nlohmann::json mesh_summary(const std::string& method, const meshers::MeshRequest& request,
-                            const TimedMesh& mesh, const ValidityReport& validity) {
+                            const PolyMesh& mesh, const nlohmann::json& mesher_summary,
+                            double seconds, const ValidityReport& validity) {
   nlohmann::json j{{"method", method},
                    {"domain", request.domain_name},
                    {"base_level", meshers::given<std::int64_t>(request.options, "base-level")
@@ -61,12 +62,12 @@ nlohmann::json mesh_summary(const std::string& method, const meshers::MeshReques
                    {"cells_between_levels",
                     meshers::given<std::int64_t>(request.options, "cells-between-levels")
                         .value_or(OctreeOptions{}.cells_between_levels)},
-                   {"time_seconds", mesh.seconds},
-                   {"regions", region_summary(mesh.result.mesh, validity)},
+                   {"time_seconds", seconds},
+                   {"regions", region_summary(mesh, validity)},
                    {"validity", to_json(validity)}};
   if (request.level) j["level"] = *request.level;
   if (request.size) j["size"] = *request.size;
-  j.update(mesh.result.summary);
+  j.update(mesher_summary);
   return j;
 }
 

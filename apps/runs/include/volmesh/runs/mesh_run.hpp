@@ -35,7 +35,9 @@ nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validi
 // `volmesh mesh --json`'s object but its output file, total time and decomposition: the
 // method, domain, level or size, octree options, time_seconds, regions, validity and the
 // mesher's own figures.
+// `mesher_summary` and `seconds`: the mesher's own figures and time (TimedMesh).
 nlohmann::json mesh_summary(const std::string& method, const meshers::MeshRequest& request,
-                            const TimedMesh& mesh, const ValidityReport& validity);
+                            const PolyMesh& mesh, const nlohmann::json& mesher_summary,
+                            double seconds, const ValidityReport& validity);
 
 }  // namespace volmesh::cli
