@@ -14,9 +14,14 @@ BUILD_PACKAGES := cmake ninja-build g++ ccache pkg-config libeigen3-dev libcgal-
   libmpfr-dev libvtk9-dev libmetis-dev libgtest-dev libcli11-dev nlohmann-json3-dev \
   libtbb-dev zlib1g-dev libmuparser-dev libgd-dev petsc-dev libhypre-dev openmpi-bin \
   libopenmpi-dev libp4est-dev
+# The Python module (python/): pybind11 for Debian's python3, numpy for its arrays.
+PYTHON_PACKAGES := python3-dev pybind11-dev python3-pybind11 python3-numpy
+BUILD_PACKAGES += $(PYTHON_PACKAGES)
 # Third-party readers the round-trip tests check our output with (VTK's parallel reader for
 # the distributed solve's PVTU), and the test surfaces.
 TEST_PACKAGES := python3 python3-meshio python3-vtk9 gmsh openfoam libcgal-demo
+# The Python module's tests.
+TEST_PACKAGES += python3-pytest
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 missing = $(shell for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done)

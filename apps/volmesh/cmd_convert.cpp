@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "mesh_input.hpp"
+#include "volmesh/runs/mesh_input.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/geometry/surface_check.hpp"

@@ -17,8 +17,8 @@
 
 #include "commands.hpp"
 #include "progress_line.hpp"
-#include "solve_setup.hpp"
-#include "study_run.hpp"
+#include "volmesh/runs/solve_setup.hpp"
+#include "volmesh/runs/study_run.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"

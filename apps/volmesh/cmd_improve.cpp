@@ -5,19 +5,15 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
-#include <string_view>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "progress_line.hpp"
-#include "thread_limit.hpp"
-#include "volmesh/core/convert.hpp"
-#include "volmesh/core/errors.hpp"
+#include "volmesh/runs/thread_limit.hpp"
 #include "volmesh/core/stopwatch.hpp"
-#include "volmesh/core/validity.hpp"
-#include "volmesh/improve/improve.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/surface_io.hpp"
+#include "volmesh/runs/improve_run.hpp"
 
 namespace volmesh::cli {
 
@@ -33,81 +29,28 @@ struct ImproveCliOptions {
 // Where the steps start on the progress bar.
 constexpr double kImproveStart = 0.1, kImproveEnd = 0.9;
 
-std::string first_problem(const ValidityReport& r) {
-  return r.problems.empty() ? std::string("see volmesh check") : r.problems.front();
-}
-
-// The input as a tet mesh, or one line saying why it is none.
-TetMesh read_tet_mesh(const std::string& path) {
-  const PolyMesh poly = read_mesh(path);
-  const ValidityReport validity = check_validity(poly);
-  if (!validity.valid()) throw InputError(path + ": invalid mesh (" + first_problem(validity) + ")");
-  TetMesh mesh;
-  try {
-    mesh = to_tet_mesh(poly);
-  } catch (const InputError& e) {
-    // "mesh: cell N is not a tetrahedron (...)", said of the file.
-    std::string what = e.what();
-    constexpr std::string_view kPrefix = "mesh: ";
-    if (what.starts_with(kPrefix)) what.erase(0, kPrefix.size());
-    throw InputError(path + ": " + what);
-  }
-  improve::require_positive_tets(mesh, path);
-  return mesh;
-}
-
-nlohmann::json to_json(const improve::QualitySummary& q) {
-  return {{"tets", q.tets},
-          {"points", q.points},
-          {"min_dihedral_deg", q.min_dihedral_deg},
-          {"max_dihedral_deg", q.max_dihedral_deg},
-          {"tets_below_10_deg", q.below_10_degrees},
-          {"max_radius_edge", q.max_radius_edge},
-          {"min_sine", q.min_quality}};
-}
-
-nlohmann::json to_json(const improve::OperationCounts& o) {
-  return {{"smoothed", o.smoothed},           {"slid", o.slid},
-          {"flips_3_2", o.flips_3_2},         {"flips_4_4", o.flips_4_4},
-          {"edge_removals", o.edge_removals}, {"flips_2_3", o.flips_2_3},
-          {"face_removals", o.face_removals}, {"contractions", o.contractions},
-          {"insertions", o.insertions}};
-}
-
 int run_improve(const ImproveCliOptions& opt) {
   const auto threads = limit_threads(opt.threads);
   require_writable_mesh_path(opt.output);
   const Clock::time_point start = Clock::now();
   ProgressLine progress("improve", opt.quiet);
   progress("reading " + opt.input, 0.0);
-  TetMesh mesh = read_tet_mesh(opt.input);
-  improve::ImproveOptions options;
-  options.max_seconds = opt.max_seconds;
-  if (!opt.surface.empty()) options.slides = improve::slides_on_surface(mesh, read_surface(opt.surface));
-  options.progress = part_of(progress.progress(), kImproveStart, kImproveEnd);
-  const improve::ImproveStats stats = improve::improve_tet_mesh(mesh, options);
-
-  progress("checking", kImproveEnd);
-  const PolyMesh out = to_poly_mesh(mesh);
-  const ValidityReport validity = check_validity(out);
-  if (!validity.valid())
-    throw InputError(opt.input + ": the improved mesh fails the check (" + first_problem(validity) +
-                     "), not written");
+  TetMesh mesh = tet_mesh_to_improve(read_mesh(opt.input), opt.input);
+  const TriSurface surface = opt.surface.empty() ? TriSurface{} : read_surface(opt.surface);
+  const Improved improved =
+      improve_checked(std::move(mesh), surface, opt.max_seconds, opt.input,
+                      part_of(progress.progress(), kImproveStart, kImproveEnd));
+  const improve::ImproveStats& stats = improved.stats;
   progress("writing " + opt.output, kImproveEnd);
-  write_mesh(out, opt.output);
+  write_mesh(improved.mesh, opt.output);
   progress.clear();
 
   const double seconds = seconds_since(start);
   if (opt.json) {
-    const nlohmann::json j{{"input", opt.input},
-                           {"output", opt.output},
-                           {"before", to_json(stats.before)},
-                           {"after", to_json(stats.after)},
-                           {"operations", to_json(stats.operations)},
-                           {"passes", stats.passes},
-                           {"timed_out", stats.timed_out},
-                           {"improve_seconds", stats.seconds},
-                           {"seconds", seconds}};
+    nlohmann::json j = improve_summary(stats);
+    j["input"] = opt.input;
+    j["output"] = opt.output;
+    j["seconds"] = seconds;
     std::cout << j.dump(2) << "\n";
   }
   std::cerr << "wrote " << opt.output << ": " << stats.after.tets << " tets (" << stats.before.tets

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "reports.hpp"
+#include "volmesh/runs/reports.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/surface_io.hpp"
 
@@ -30,8 +30,7 @@ int run_info(const InfoOptions& opt) {
     TriSurface s = read_surface(opt.input);
     const SurfaceReport r = check_surface(s, opt.input);
     box = bounding_box(s.points);
-    j["kind"] = "surface";
-    j["surface"] = to_json(r);
+    j.update(surface_info(r, s));
     if (!opt.json) {
       std::cout << opt.input << ": surface\n";
       print_surface(std::cout, r);

@@ -2,7 +2,6 @@
 // the registry (volmesh/meshers/registry.hpp). Every mesh is checked before it is written.
 #include <CLI/CLI.hpp>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -10,8 +9,7 @@
 #include "commands.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
-#include "thread_limit.hpp"
-#include "reports.hpp"
+#include "volmesh/runs/thread_limit.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
@@ -19,7 +17,7 @@
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/meshers/registry.hpp"
-#include "volmesh/octree/octree.hpp"
+#include "volmesh/runs/mesh_run.hpp"
 
 namespace volmesh::cli {
 
@@ -40,19 +38,6 @@ struct MeshOptions {
   int threads = 0;
 };
 
-nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validity) {
-  std::map<Index, Index> cells;
-  for (const Index r : mesh.cell_region) ++cells[r];
-  nlohmann::json regions = nlohmann::json::object();
-  for (const auto& [region, count] : cells) {
-    const auto volume = validity.region_volume.find(region);
-    regions[std::to_string(region)] = {
-        {"cells", count},
-        {"volume", volume == validity.region_volume.end() ? 0.0 : volume->second}};
-  }
-  return regions;
-}
-
 int run_mesh(const MeshOptions& opt) {
   const meshers::MesherInfo& info = meshers::find_mesher(opt.method);
   if (!options_apply("mesh", info, opt.given)) return 2;
@@ -68,46 +53,28 @@ int run_mesh(const MeshOptions& opt) {
   request.size = opt.size;
   request.options = opt.given;
   request.progress = part_of(progress.progress(), 0.0, kMeshingShare);
-  const Clock::time_point meshing = Clock::now();
-  meshers::MeshResult result = meshers::mesh(info, *domain, request);
-  const double mesh_seconds = seconds_since(meshing);
+  const TimedMesh result = mesh_timed(info, *domain, request);
 
   // An invalid mesh is a bug in the mesher: say so, and write nothing.
   progress("checking", kMeshingShare);
-  const ValidityReport validity = check_validity(result.mesh);
-  if (!validity.valid())
-    throw std::runtime_error(opt.method + " produced an invalid mesh of " + opt.domain + " (" +
-                             (validity.problems.empty() ? std::string("see volmesh check")
-                                                        : validity.problems.front()) +
-                             "); nothing written");
+  const ValidityReport validity = require_valid_output(result.result.mesh, opt.method, opt.domain);
   // The element formats take tetrahedra and hexahedra: --decompose tets writes any mesh to
   // them as conforming tetrahedra. The summary stays the mesher's own.
   std::optional<PolyMesh> tets;
   if (opt.decompose == "tets") {
     progress("decomposing into tetrahedra", kDecomposingAt);
-    tets = decompose_into_tets(result.mesh, opt.output);
+    tets = decompose_into_tets(result.result.mesh, opt.output);
   }
   progress("writing " + opt.output, kWritingAt);
-  write_mesh(tets ? *tets : result.mesh, opt.output);
+  write_mesh(tets ? *tets : result.result.mesh, opt.output);
   progress.clear();
 
-  const PolyMesh& mesh = result.mesh;
+  const PolyMesh& mesh = result.result.mesh;
   if (opt.json) {
-    nlohmann::json j{{"method", opt.method},
-                     {"domain", request.domain_name},
-                     {"output", opt.output},
-                     {"base_level", meshers::given<std::int64_t>(opt.given, "base-level")
-                                        .value_or(OctreeOptions{}.base_level)},
-                     {"cells_between_levels",
-                      meshers::given<std::int64_t>(opt.given, "cells-between-levels")
-                          .value_or(OctreeOptions{}.cells_between_levels)},
-                     {"time_seconds", mesh_seconds},
-                     {"total_seconds", seconds_since(start)},
-                     {"regions", region_summary(mesh, validity)},
-                     {"validity", to_json(validity)}};
-    if (request.level) j["level"] = *request.level;
-    if (request.size) j["size"] = *request.size;
-    j.update(result.summary);
+    nlohmann::json j =
+        mesh_summary(opt.method, request, mesh, result.result.summary, result.seconds, validity);
+    j["output"] = opt.output;
+    j["total_seconds"] = seconds_since(start);
     if (tets) j["decomposed"] = {{"tetrahedra", tets->num_cells()}, {"points", tets->num_points()}};
     std::cout << j.dump(2) << "\n";
   } else {
@@ -116,7 +83,7 @@ int run_mesh(const MeshOptions& opt) {
     if (request.size) std::cout << " at size " << *request.size;
     std::cout << ": " << mesh.num_cells() << " cells, " << mesh.num_faces() << " faces, "
               << mesh.num_points() << " vertices, volume " << validity.total_volume << ", "
-              << mesh_seconds << " s";
+              << result.seconds << " s";
     if (tets) std::cout << "; written as " << tets->num_cells() << " tetrahedra";
     std::cout << "\n";
   }

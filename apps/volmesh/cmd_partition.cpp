@@ -16,9 +16,8 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
-#include "volmesh/io/partitioned_io.hpp"
-#include "volmesh/partition/part_mesh.hpp"
 #include "volmesh/partition/partition.hpp"
+#include "volmesh/runs/partition_run.hpp"
 
 namespace volmesh::cli {
 
@@ -37,38 +36,6 @@ std::string extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
   return ext;
-}
-
-// Each part as a VTU piece with the global ids of its cells and points (the names of VTK's
-// vtkGenerateGlobalIds) and its part number.
-std::vector<MeshPiece> pvtu_pieces(const PolyMesh& mesh, const std::vector<Index>& cell_part,
-                                   Index parts) {
-  std::vector<MeshPiece> pieces;
-  Index p = 0;
-  for (PartMesh& part : split_mesh(mesh, cell_part, parts)) {
-    MeshPiece& piece = pieces.emplace_back();
-    piece.fields.cell_ints.push_back({"GlobalCellIds", std::move(part.global_cells)});
-    piece.fields.cell_ints.push_back({"partition", std::vector<Index>(part.mesh.num_cells(), p++)});
-    // MeshFields has no integer point arrays: doubles hold these ids exactly.
-    piece.fields.point.push_back(
-        {"GlobalPointIds", 1, {part.global_points.begin(), part.global_points.end()}});
-    piece.mesh = std::move(part.mesh);
-  }
-  return pieces;
-}
-
-void write_partitioned(const PolyMesh& mesh, const Partition& partition,
-                       const PartitionCliOptions& opt) {
-  const std::string ext = extension(opt.output);
-  if (ext == ".pvtu") {
-    write_pvtu(pvtu_pieces(mesh, partition.cell_part, opt.parts), opt.output);
-  } else if (ext == ".msh") {
-    write_msh_partitioned(mesh, partition.cell_part, opt.parts, opt.output);
-  } else {
-    MeshFields fields;
-    fields.cell_ints.push_back({"partition", partition.cell_part});
-    write_vtu(mesh, opt.output, fields);
-  }
 }
 
 nlohmann::json to_json(const PartitionStats& s) {
@@ -127,7 +94,7 @@ int run_partition(const PartitionCliOptions& opt) {
 
   const Clock::time_point writing = Clock::now();
   progress("writing " + opt.output, kWriteStart);
-  write_partitioned(mesh, partition, opt);
+  write_partitioned(mesh, partition.cell_part, opt.parts, opt.output);
   const double write_seconds = seconds_since(writing);
   progress.clear();
 

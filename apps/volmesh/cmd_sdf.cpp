@@ -12,9 +12,9 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
 #include "volmesh/geometry/surface_check.hpp"
-#include "volmesh/io/voxel_grid_io.hpp"
 #include "volmesh/io/surface_io.hpp"
 #include "volmesh/io/voxel_grid_io.hpp"
+#include "volmesh/runs/mesh_input.hpp"
 
 namespace volmesh::cli {
 
@@ -104,7 +104,7 @@ Command add_sdf_command(CLI::App& root) {
           [](std::string& s) {
             Index d = 0;
             const bool number = CLI::detail::lexical_cast(s, d);
-            return number && d <= 1025 && is_octree_dim(d) ? std::string()
+            return number && d <= kMaxSdfDim && is_octree_dim(d) ? std::string()
                                                            : "must be 2^k + 1, from 3 to 1025";
           },
           "2^k+1"));

@@ -8,10 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "distributed.hpp"
+#include "volmesh/runs/distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
-#include "solve_setup.hpp"
+#include "solver_option.hpp"
+#include "volmesh/runs/mesh_run.hpp"
+#include "volmesh/runs/solve_run.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/core/validity.hpp"
@@ -36,11 +38,6 @@ struct SolveOptions {
 // follow.
 constexpr double kMeshShare = 0.5;
 constexpr double kWriteStart = 0.95;
-
-nlohmann::json errors_json(const std::optional<fem::ErrorNorms>& e) {
-  if (!e) return nullptr;
-  return {{"l2", e->l2}, {"linf", e->linf}, {"h1", e->h1}};
-}
 
 // The mesh and the domain its boundary data refer to.
 struct Input {
@@ -104,12 +101,9 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   in.mesh = mesh_on_rank_zero(
       [&] {
         in.domain = open_domain(spec);
-        meshers::MeshRequest request;
-        request.domain_name = in.domain_name;
-        if (opt.level >= 0) request.level = opt.level;
-        request.uniform = true;
-        request.options = opt.given;
-        request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
+        meshers::MeshRequest request = uniform_request(
+            in.domain_name, opt.level, opt.given, part_of(progress, 0.0, 1.0, "meshing: "));
+        if (opt.level < 0) request.level.reset();
         meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
         numbers[0] = m.h;
         return std::move(m.mesh);
@@ -134,12 +128,7 @@ nlohmann::json seconds_json(const std::vector<std::pair<const char*, double>>& s
 
 int run_solve(const SolveOptions& opt) {
   const Clock::time_point start = Clock::now();
-  const fem::ProblemKind kind = problem_kind(opt.problem);
-  const bool elasticity = kind == fem::ProblemKind::elasticity;
-  if (elasticity != (opt.kind == "elasticity"))
-    throw InputError("problem " + opt.problem.label() + " is " +
-                     (elasticity ? "an elasticity" : "a Poisson") + " problem: use volmesh solve " +
-                     (elasticity ? "elasticity" : "poisson"));
+  require_problem_kind(opt.kind, opt.problem);
 
   if (opt.method.empty() && !opt.given.empty()) {
     const auto& [name, value] = *opt.given.begin();
@@ -164,74 +153,43 @@ int run_solve(const SolveOptions& opt) {
                                        : !in.cell_part.empty() ? in.cell_part
                                                                : partition_for_ranks(in.mesh);
   const double partition_seconds = seconds_since(partitioning);
-  const Solver solver{opt.solver, distributed ? &cell_rank : nullptr};
-  const Clock::time_point setting_up = Clock::now();
-  const auto solving = [&](const SpaceChoice& space) {
-    return part_of(progress, kMeshShare, kWriteStart,
-                   "solving " + opt.kind + " (" + space.name() + "): ");
+  SolveRequest request{.kind = opt.kind,
+                       .problem = opt.problem,
+                       .space = opt.space,
+                       .default_space = in.default_space,
+                       .own_boundary = in.own_boundary,
+                       .solver = {opt.solver, distributed ? &cell_rank : nullptr}};
+  request.warn = [&](const std::string& warning) {
+    if (!rank_zero) return;
+    progress_line.clear();
+    std::cerr << "warning: " << warning << "\n";
   };
-
-  SpaceChoice space;
-  Index dofs = 0;
-  fem::LinearSolveReport report;
-  std::optional<fem::ErrorNorms> errors;
-  MeshFields fields;
-  std::string warning;
-  // The problem's set-up here and the solver's stages; the output fields count as error
-  // evaluation (their "error" is u_h − u at every point).
-  double problem_seconds = 0.0, fields_seconds = 0.0;
+  SolveRun run;
   // What the problem finds wrong with a mesh file (a region without material data, a
   // boundary tag without a condition, a cell the space refuses) names the file.
   try {
-    if (elasticity) {
-      fem::ElasticityProblem problem;
-      fem::stage("setup", [&] {
-        space = choose_space(opt.space, in.default_space, in.mesh);
-        problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
-      });
-      if (in.own_boundary) problem.to_true_boundary = nullptr;
-      problem_seconds = seconds_since(setting_up);
-      const fem::VectorSolution s = solve_vector(in.mesh, problem, space, solving(space), solver);
-      dofs = s.dofs, report = s.solve, errors = s.errors;
-      const Clock::time_point evaluating = Clock::now();
-      fem::stage("errors", [&] { fields = vector_fields(in.mesh, s, problem); });
-      fields_seconds = seconds_since(evaluating);
-    } else {
-      fem::PoissonProblem problem;
-      fem::stage("setup", [&] {
-        space = choose_space(opt.space, in.default_space, in.mesh);
-        problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
-      });
-      if (in.own_boundary) problem.to_true_boundary = nullptr;
-      if (!warning.empty() && rank_zero) {
-        progress_line.clear();
-        std::cerr << "warning: " << warning << "\n";
-      }
-      problem_seconds = seconds_since(setting_up);
-      const fem::ScalarSolution s = solve_scalar(in.mesh, problem, space, solving(space), solver);
-      dofs = s.dofs, report = s.solve, errors = s.errors;
-      const Clock::time_point evaluating = Clock::now();
-      fem::stage("errors", [&] { fields = scalar_fields(in.mesh, s, problem); });
-      fields_seconds = seconds_since(evaluating);
-    }
+    run = solve_problem(request, *in.domain, in.mesh, part_of(progress, kMeshShare, kWriteStart));
   } catch (const InputError& e) {
     if (opt.mesh.empty()) throw;
     throw InputError(opt.mesh + ": " + e.what());
   }
+  const SpaceChoice& space = run.space;
+  const fem::LinearSolveReport& report = run.report;
+  const std::optional<fem::ErrorNorms>& errors = run.errors;
   const Clock::time_point writing = Clock::now();
   progress_line("writing " + opt.output, kWriteStart);
-  write_solution(in.mesh, fields, cell_rank, opt.output);
+  write_solution(in.mesh, run.fields, cell_rank, opt.output);
   const double write_seconds = seconds_since(writing);
   progress_line.clear();
   const std::vector<std::pair<const char*, double>> stages{
       {"mesh", mesh_seconds},
       {"check", in.check_seconds},
       {"partition", partition_seconds},
-      {"setup", problem_seconds + report.setup_seconds},
+      {"setup", run.problem_seconds + report.setup_seconds},
       {"assembly", report.assembly_seconds},
       {"preconditioner", report.preconditioner_seconds},
       {"solve", report.solve_seconds},
-      {"errors", report.errors_seconds + fields_seconds},
+      {"errors", report.errors_seconds + run.fields_seconds},
       {"write", write_seconds}};
   const double total = seconds_since(start);
   std::vector<std::pair<const char*, double>> stages_max = stages;
@@ -240,32 +198,20 @@ int run_solve(const SolveOptions& opt) {
   if (!rank_zero) return 0;
 
   if (opt.json) {
-    nlohmann::json j{{"problem", opt.problem.label()},
-                     {"kind", opt.kind},
-                     {"domain", in.domain_name},
-                     {"space", space.name()},
-                     {"output", opt.output},
-                     {"cells", in.mesh.num_cells()},
-                     {"points", in.mesh.num_points()},
-                     {"dofs", dofs},
-                     {"unknowns", report.unknowns},
-                     {"linear_solver", report.method},
-                     {"iterations", report.iterations},
-                     {"residual", report.residual},
-                     {"errors", errors_json(errors)},
-                     {"seconds", seconds_json(stages, total)}};
+    nlohmann::json j = solve_summary(request, run, in.domain_name, in.mesh);
+    j["output"] = opt.output;
+    j["seconds"] = seconds_json(stages, total);
     if (distributed) {
       j["ranks"] = fem::ranks();
       j["seconds_max"] = seconds_json(stages_max, total_max);
     }
     if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
     if (opt.level >= 0) j["level"] = opt.level;
-    if (!warning.empty()) j["warning"] = warning;
     std::cout << j.dump(2) << "\n";
     return 0;
   }
   std::cout << opt.output << ": " << opt.problem.label() << " on " << in.domain_name << ", "
-            << in.mesh.num_cells() << " cells, " << dofs << " DOFs (" << space.name() << "); "
+            << in.mesh.num_cells() << " cells, " << run.dofs << " DOFs (" << space.name() << "); "
             << report.method << ", " << report.iterations << " iterations, residual "
             << report.residual << "; " << total << " s\n";
   if (errors)

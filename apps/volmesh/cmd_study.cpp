@@ -7,10 +7,11 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "distributed.hpp"
+#include "volmesh/runs/distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
-#include "study_run.hpp"
+#include "solver_option.hpp"
+#include "volmesh/runs/study_run.hpp"
 #include "volmesh/core/errors.hpp"
 
 namespace volmesh::cli {

@@ -6,40 +6,16 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "distributed.hpp"
+#include "volmesh/runs/allocator.hpp"
+#include "volmesh/runs/distributed.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/fem/parallel.hpp"
 #include "volmesh/meshers/registry.hpp"
 #include "volmesh/octree_dist/distributed_octree.hpp"
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
-namespace {
-
-// The meshers build and drop tables of tens of megabytes pass after pass. glibc hands large
-// blocks back to the system on free, and every pass would pay its page faults again (up to
-// a tenth of a run); kept in the heap, they are reused: blocks up to kMmapThreshold come
-// from the heap, which is trimmed only past kTrimThreshold of free memory and grows by
-// kTopPad at a time.
-constexpr int kMmapThreshold = 32 << 20;
-constexpr int kTrimThreshold = 1 << 30;
-constexpr int kTopPad = 256 << 20;
-
-void keep_freed_memory() {
-#ifdef __GLIBC__
-  mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
-  mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
-  mallopt(M_TOP_PAD, kTopPad);
-#endif
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace volmesh;
-  keep_freed_memory();
+  cli::keep_freed_memory();
   // Takes PETSc's options off the command line before CLI11 sees it; PETSc stops when it ends.
   fem::Session session(argc, argv);
   if (!fem::petsc_options_misplaced().empty()) {

@@ -398,10 +398,9 @@ std::unique_ptr<Domain> domain_of(const JsonValue& root) {
 
 }  // namespace
 
-std::unique_ptr<Domain> read_domain_file(const fs::path& path) {
-  const FileContext file{path.string(), path.parent_path()};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(file.name + ": cannot open");
+std::unique_ptr<Domain> read_domain_json(std::istream& in, const std::string& name,
+                                         const fs::path& dir) {
+  const FileContext file{name, dir};
   json root;
   try {
     root = json::parse(in);
@@ -413,6 +412,12 @@ std::unique_ptr<Domain> read_domain_file(const fs::path& path) {
                      (at == std::string::npos ? ": " + what : what.substr(at)));
   }
   return domain_of(JsonValue(root, "", file));
+}
+
+std::unique_ptr<Domain> read_domain_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open");
+  return read_domain_json(in, path.string(), path.parent_path());
 }
 
 }  // namespace volmesh

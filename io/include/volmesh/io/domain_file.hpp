@@ -3,6 +3,8 @@
 // sheets, or analytic solids, described in docs/methods.md ("Domain files"). Paths inside are
 // relative to the file.
 #include <filesystem>
+#include <istream>
+#include <string>
 #include <memory>
 
 #include "volmesh/domain/domain.hpp"
@@ -14,5 +16,9 @@ namespace volmesh {
 // (syntax errors, unknown keys, wrong types or values, files that cannot be read, and the
 // geometric checks of the domain built).
 std::unique_ptr<Domain> read_domain_file(const std::filesystem::path& path);
+// The same from a stream of JSON: `name` stands for the file in messages, and the paths
+// inside are relative to `dir`.
+std::unique_ptr<Domain> read_domain_json(std::istream& in, const std::string& name,
+                                         const std::filesystem::path& dir);
 
 }  // namespace volmesh

@@ -1,6 +1,4 @@
-#include "solve_setup.hpp"
-
-#include <map>
+#include "volmesh/runs/solve_setup.hpp"
 
 #include "volmesh/core/boundary.hpp"
 #include "volmesh/core/convert.hpp"
@@ -82,17 +80,11 @@ fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain&
   return fem::make_elasticity_problem(spec.name, domain, mesh.tag_names);
 }
 
-void add_solver_option(CLI::App& app, SolverBackend& backend) {
-  const std::map<std::string, SolverBackend> names{{"auto", SolverBackend::automatic},
-                                                   {"eigen", SolverBackend::eigen},
-                                                   {"petsc", SolverBackend::petsc}};
-  app.add_option("--solver", backend,
-                 "who solves the large systems: auto (PETSc CG + BoomerAMG when built with "
-                 "PETSc, else Eigen), eigen (CG + incomplete Cholesky), petsc; PETSc's own "
-                 "options (-ksp_*, -pc_*, -log_view) go after the subcommand's own arguments, "
-                 "or after --")
-      ->transform(CLI::CheckedTransformer(names))
-      ->default_str("auto");
+const std::map<std::string, SolverBackend>& solver_backends() {
+  static const std::map<std::string, SolverBackend> names{{"auto", SolverBackend::automatic},
+                                                          {"eigen", SolverBackend::eigen},
+                                                          {"petsc", SolverBackend::petsc}};
+  return names;
 }
 
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,

@@ -1,4 +1,4 @@
-#include "mesh_input.hpp"
+#include "volmesh/runs/mesh_input.hpp"
 
 #include <limits>
 

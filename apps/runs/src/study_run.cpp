@@ -1,4 +1,4 @@
-#include "study_run.hpp"
+#include "volmesh/runs/study_run.hpp"
 
 #include <unistd.h>
 
@@ -8,7 +8,8 @@
 #include <fstream>
 #include <string_view>
 
-#include "distributed.hpp"
+#include "volmesh/runs/distributed.hpp"
+#include "volmesh/runs/mesh_run.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/open_domain.hpp"
 
@@ -115,12 +116,8 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
     // The space follows from the first level's mesh; every level has the same cell kinds.
     std::optional<SpaceChoice> space;
     const fem::MeshAtLevel mesh = [&](int level, const Progress& meshing) {
-      meshers::MeshRequest request;
-      request.domain_name = outcome.domain;
-      request.level = level;
-      request.uniform = true;
-      request.options = spec.options;
-      request.progress = meshing;
+      const meshers::MeshRequest request =
+          uniform_request(outcome.domain, level, spec.options, meshing);
       std::vector<double> h{0.0};
       PolyMesh m = mesh_on_rank_zero(
           [&] {

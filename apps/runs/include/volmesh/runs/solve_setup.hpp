@@ -1,7 +1,7 @@
 #pragma once
 // What `solve`, `study` and `demo` share: the space a mesh is solved in, the problem (named,
 // or given as expressions) and the solve itself.
-#include <CLI/CLI.hpp>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,9 +45,10 @@ fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domai
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
                                           const PolyMesh& mesh);
 
-// --solver auto|eigen|petsc: who runs CG on the large systems (LinearSolverOptions::Backend).
+// Who runs CG on the large systems (LinearSolverOptions::Backend).
 using SolverBackend = fem::LinearSolverOptions::Backend;
-void add_solver_option(CLI::App& app, SolverBackend& backend);
+// By name: auto, eigen, petsc (--solver).
+const std::map<std::string, SolverBackend>& solver_backends();
 
 // The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank).
 struct Solver {

@@ -1,4 +1,4 @@
-#include "reports.hpp"
+#include "volmesh/runs/reports.hpp"
 
 #include <iomanip>
 
@@ -85,6 +85,12 @@ nlohmann::json to_json(const QualityReport& r) {
           {"min_volume", r.min_volume},
           {"max_neighbour_volume_ratio", r.max_neighbour_volume_ratio},
           {"metrics", metrics}};
+}
+
+nlohmann::json surface_info(const SurfaceReport& report, const TriSurface& surface) {
+  return {{"kind", "surface"},
+          {"surface", to_json(report)},
+          {"bounding_box", to_json(bounding_box(surface.points))}};
 }
 
 void print_quality(std::ostream& os, const QualityReport& r) {

@@ -1,4 +1,4 @@
-#include "distributed.hpp"
+#include "volmesh/runs/distributed.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>

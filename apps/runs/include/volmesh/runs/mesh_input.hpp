@@ -9,6 +9,9 @@
 
 namespace volmesh::cli {
 
+// The most samples per axis of a signed-distance grid (`volmesh sdf --dim`).
+inline constexpr Index kMaxSdfDim = 1025;
+
 // Throws InputError "PATH: unknown format" for anything else.
 void require_known_format(const std::filesystem::path& path);
 

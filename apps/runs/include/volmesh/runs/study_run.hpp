@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "solve_setup.hpp"
+#include "volmesh/runs/solve_setup.hpp"
 #include "volmesh/fem/study.hpp"
 #include "volmesh/meshers/registry.hpp"
 #include "volmesh/plot/loglog_png.hpp"

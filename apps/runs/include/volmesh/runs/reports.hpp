@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "mesh_input.hpp"
+#include "volmesh/runs/mesh_input.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/geometry/surface_check.hpp"
 #include "volmesh/quality/report.hpp"
@@ -14,6 +14,9 @@ nlohmann::json to_json(const ValidityReport& r);
 nlohmann::json to_json(const SurfaceReport& r);
 nlohmann::json to_json(const Box& b);
 nlohmann::json to_json(const QualityReport& r);
+
+// `info --json`'s object of a checked surface but its file: kind, report, bounding box.
+nlohmann::json surface_info(const SurfaceReport& report, const TriSurface& surface);
 
 void print_validity(std::ostream& os, const ValidityReport& r);
 void print_surface(std::ostream& os, const SurfaceReport& r);
