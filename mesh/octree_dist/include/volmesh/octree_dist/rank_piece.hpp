@@ -1,0 +1,23 @@
+#pragma once
+// A rank's piece of a mesh built on every rank (no rank holding the whole): its cells as a
+// mesh of their own, with the numbers the cells and points have over all ranks.
+#include <cstdint>
+#include <vector>
+
+#include "volmesh/core/poly_mesh.hpp"
+
+namespace volmesh {
+
+struct RankPiece {
+  // The rank's cells. A face shared with another rank's cell is a boundary face of the
+  // piece, oriented out of it, tagged "procBoundary<rank>to<other>".
+  PolyMesh mesh;
+  // Global numbers over 0 .. count - 1. A cell's is its index in the serial mesher's
+  // numbering. A point belongs to the lowest rank whose cells use it (point_owner); the
+  // ranks number the points they own one after the other, so each rank's are one stretch.
+  std::vector<std::int64_t> global_cells, global_points;
+  std::vector<int> point_owner;
+  std::int64_t global_cell_count = 0, global_point_count = 0;
+};
+
+}  // namespace volmesh
