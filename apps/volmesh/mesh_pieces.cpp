@@ -1,0 +1,73 @@
+#include "mesh_pieces.hpp"
+
+#include <numeric>
+#include <utility>
+
+#include "distributed.hpp"
+#include "volmesh/core/errors.hpp"
+#include "volmesh/fem/parallel.hpp"
+#include "volmesh/meshers/grid.hpp"
+#include "volmesh/meshers/octree_request.hpp"
+#include "volmesh/octree_dist/grid_piece.hpp"
+#include "volmesh/octree_dist/staircase_piece.hpp"
+
+namespace volmesh::cli {
+
+std::string why_not_on_every_rank(const meshers::MesherInfo& method,
+                                  const meshers::MethodOptions& given) {
+  if (!p4est_built()) return "this volmesh was built without p4est";
+  if (method.name == "staircase") return "";
+  if (method.name == "grid")
+    return meshers::given<bool>(given, "tets").value_or(false) ? "grid --tets has no pieces" : "";
+  return method.name + " does not mesh in pieces";
+}
+
+RankMesh mesh_on_every_rank(const meshers::MesherInfo& method, const Domain& domain,
+                            const meshers::MeshRequest& request) {
+  RankMesh out;
+  fem::stage("mesh", [&] {
+    if (method.name == "grid") {
+      const Box3 box = meshers::grid_box(domain, request);
+      out.piece = grid_piece(box, *request.level);
+      out.h = box.size().maxCoeff() / static_cast<double>(std::int64_t{1} << *request.level);
+      return;
+    }
+    const OctreeOptions options = meshers::octree_request(request);
+    out.piece = staircase_piece(build_distributed_octree(domain, options), domain);
+    out.h = meshers::octree_cell_size(domain, options);
+  });
+  require_cell_per_rank(out.piece.global_cell_count);
+  return out;
+}
+
+MeshPiece pvtu_piece(RankPiece piece, MeshFields fields, int rank) {
+  const Index cells = piece.mesh.num_cells();
+  fields.cell_ints.insert(fields.cell_ints.begin(),
+                          {{"GlobalCellIds", {piece.global_cells.begin(), piece.global_cells.end()}},
+                           {"partition", std::vector<Index>(cells, rank)}});
+  // MeshFields has no integer point arrays: doubles hold these ids exactly.
+  fields.point.insert(fields.point.begin(),
+                      {"GlobalPointIds", 1, {piece.global_points.begin(), piece.global_points.end()}});
+  return {std::move(piece.mesh), std::move(fields)};
+}
+
+RankPiece whole_mesh_piece(PolyMesh mesh) {
+  RankPiece out;
+  out.global_cell_count = mesh.num_cells();
+  out.global_point_count = mesh.num_points();
+  out.global_cells.resize(out.global_cell_count);
+  std::iota(out.global_cells.begin(), out.global_cells.end(), 0);
+  out.global_points.resize(out.global_point_count);
+  std::iota(out.global_points.begin(), out.global_points.end(), 0);
+  out.point_owner.assign(out.global_point_count, 0);
+  out.mesh = std::move(mesh);
+  return out;
+}
+
+void write_rank_piece(RankPiece piece, MeshFields fields, const std::filesystem::path& path) {
+  MeshPiece mine;
+  fem::stage("write", [&] { mine = pvtu_piece(std::move(piece), std::move(fields), fem::rank()); });
+  write_pieces(std::move(mine), path, fem::ranks());
+}
+
+}  // namespace volmesh::cli

@@ -1,0 +1,41 @@
+#pragma once
+// Meshing on every rank under mpirun (docs/distributed.md): the staircase method from the
+// distributed octree (each rank its leaves and the ghost layer) and the grid's hexahedra
+// (each rank its stretch of the Morton curve). No rank holds more than its own piece.
+#include <filesystem>
+#include <string>
+
+#include "volmesh/domain/domain.hpp"
+#include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/partitioned_io.hpp"
+#include "volmesh/meshers/registry.hpp"
+#include "volmesh/octree_dist/rank_piece.hpp"
+
+namespace volmesh::cli {
+
+// Why `method` with the options `given` does not mesh on every rank ("" when it does): a
+// method without pieces, an option the pieces do not take, a build without p4est.
+std::string why_not_on_every_rank(const meshers::MesherInfo& method,
+                                  const meshers::MethodOptions& given);
+
+struct RankMesh {
+  RankPiece piece;
+  double h = 0.0;  // the cell edge at the boundaries, as the method's MeshResult gives it
+};
+
+// This rank's piece, collective, the stage "mesh" (fem::stage): a failure on any rank makes
+// every rank throw. Throws InputError on every rank when a rank would hold no cell.
+RankMesh mesh_on_every_rank(const meshers::MesherInfo& method, const Domain& domain,
+                            const meshers::MeshRequest& request);
+
+// Rank `rank`'s piece of a .pvtu set: its mesh with the arrays `volmesh partition` writes
+// ("GlobalCellIds", "partition", "GlobalPointIds") before `fields` (the piece's own values).
+MeshPiece pvtu_piece(RankPiece piece, MeshFields fields, int rank);
+
+// The whole mesh as the one piece of a set: every number its own.
+RankPiece whole_mesh_piece(PolyMesh mesh);
+
+// Every rank's piece written as one .pvtu set (write_pieces), collective.
+void write_rank_piece(RankPiece piece, MeshFields fields, const std::filesystem::path& path);
+
+}  // namespace volmesh::cli
