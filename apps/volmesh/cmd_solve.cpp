@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "distributed.hpp"
+#include "mesh_pieces.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
 #include "solve_setup.hpp"
@@ -24,7 +25,7 @@ namespace volmesh::cli {
 namespace {
 
 struct SolveOptions {
-  std::string kind, mesh, method, domain, space, output;
+  std::string kind, mesh, method, domain, space, output, partition;
   int level = -1;
   meshers::MethodOptions given;
   bool json = false, quiet = false;
@@ -55,6 +56,9 @@ struct Input {
   double check_seconds = 0.0;  // of a mesh read from a file
   // Under mpirun, a partitioned PVTU's parts: each cell's rank. Empty: METIS partitions.
   std::vector<Index> cell_part;
+  // Under mpirun with --partition octree: `mesh` is this rank's piece, `piece` its numbers.
+  bool in_pieces = false;
+  RankPiece piece;
 };
 
 // Refuses a mesh read from a file that is not valid; numbers[1]: the check's seconds.
@@ -101,15 +105,25 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   const std::string spec = opt.domain.empty() ? method.default_domain : opt.domain;
   in.domain_name = domain_display_name(spec);
   in.default_space = method.default_space;
+  meshers::MeshRequest request;
+  request.domain_name = in.domain_name;
+  if (opt.level >= 0) request.level = opt.level;
+  request.uniform = true;
+  request.options = opt.given;
+  request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
+  if (partition_in_pieces(opt.partition, opt.method, opt.given, opt.output)) {
+    report(progress, "meshing on " + std::to_string(fem::ranks()) + " ranks", 0.0);
+    fem::stage("mesh", [&] { in.domain = open_domain(spec); });
+    RankMesh m = mesh_on_every_rank(method, *in.domain, request);
+    in.h = m.h;
+    in.mesh = std::move(m.piece.mesh);
+    in.piece = std::move(m.piece);
+    in.in_pieces = true;
+    return in;
+  }
   in.mesh = mesh_on_rank_zero(
       [&] {
         in.domain = open_domain(spec);
-        meshers::MeshRequest request;
-        request.domain_name = in.domain_name;
-        if (opt.level >= 0) request.level = opt.level;
-        request.uniform = true;
-        request.options = opt.given;
-        request.progress = part_of(progress, 0.0, 1.0, "meshing: ");
         meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
         numbers[0] = m.h;
         return std::move(m.mesh);
@@ -160,11 +174,12 @@ int run_solve(const SolveOptions& opt) {
   const Input in = read_input(opt, part_of(progress, 0.0, kMeshShare));
   const double mesh_seconds = seconds_since(start) - in.check_seconds;
   const Clock::time_point partitioning = Clock::now();
-  const std::vector<Index> cell_rank = !distributed              ? std::vector<Index>{}
-                                       : !in.cell_part.empty() ? in.cell_part
-                                                               : partition_for_ranks(in.mesh);
+  const std::vector<Index> cell_rank = !distributed || in.in_pieces ? std::vector<Index>{}
+                                       : !in.cell_part.empty()      ? in.cell_part
+                                                                    : partition_for_ranks(in.mesh);
   const double partition_seconds = seconds_since(partitioning);
-  const Solver solver{opt.solver, distributed ? &cell_rank : nullptr};
+  Solver solver{opt.solver, distributed && !in.in_pieces ? &cell_rank : nullptr};
+  if (in.in_pieces) solver.piece_points = &in.piece.global_points, solver.piece_owner = &in.piece.point_owner;
   const Clock::time_point setting_up = Clock::now();
   const auto solving = [&](const SpaceChoice& space) {
     return part_of(progress, kMeshShare, kWriteStart,
@@ -220,7 +235,10 @@ int run_solve(const SolveOptions& opt) {
   }
   const Clock::time_point writing = Clock::now();
   progress_line("writing " + opt.output, kWriteStart);
-  write_solution(in.mesh, fields, cell_rank, opt.output);
+  if (in.in_pieces)
+    write_piece_solution(in.mesh, std::move(fields), in.piece, opt.output);
+  else
+    write_solution(in.mesh, fields, cell_rank, opt.output);
   const double write_seconds = seconds_since(writing);
   progress_line.clear();
   const std::vector<std::pair<const char*, double>> stages{
@@ -239,14 +257,16 @@ int run_solve(const SolveOptions& opt) {
   const double total_max = fem::max_over_ranks(total);
   if (!rank_zero) return 0;
 
+  const std::int64_t cells = in.in_pieces ? in.piece.global_cell_count : in.mesh.num_cells();
+  const std::int64_t points = in.in_pieces ? in.piece.global_point_count : in.mesh.num_points();
   if (opt.json) {
     nlohmann::json j{{"problem", opt.problem.label()},
                      {"kind", opt.kind},
                      {"domain", in.domain_name},
                      {"space", space.name()},
                      {"output", opt.output},
-                     {"cells", in.mesh.num_cells()},
-                     {"points", in.mesh.num_points()},
+                     {"cells", cells},
+                     {"points", points},
                      {"dofs", dofs},
                      {"unknowns", report.unknowns},
                      {"linear_solver", report.method},
@@ -256,6 +276,7 @@ int run_solve(const SolveOptions& opt) {
                      {"seconds", seconds_json(stages, total)}};
     if (distributed) {
       j["ranks"] = fem::ranks();
+      j["partition"] = in.in_pieces ? "octree" : "metis";
       j["seconds_max"] = seconds_json(stages_max, total_max);
     }
     if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
@@ -265,7 +286,7 @@ int run_solve(const SolveOptions& opt) {
     return 0;
   }
   std::cout << opt.output << ": " << opt.problem.label() << " on " << in.domain_name << ", "
-            << in.mesh.num_cells() << " cells, " << dofs << " DOFs (" << space.name() << "); "
+            << cells << " cells, " << dofs << " DOFs (" << space.name() << "); "
             << report.method << ", " << report.iterations << " iterations, residual "
             << report.residual << "; " << total << " s\n";
   if (errors)
@@ -329,6 +350,7 @@ Command add_solve_command(CLI::App& root) {
           },
           "FILE.vtu|FILE.pvtu"));
   add_solver_option(*app, opt->solver);
+  add_partition_option(*app, opt->partition);
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);

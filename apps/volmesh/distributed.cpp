@@ -219,6 +219,20 @@ void write_pieces(MeshPiece mine, const std::filesystem::path& path, int pieces)
   });
 }
 
+void write_piece_solution(const PolyMesh& piece, MeshFields fields, const RankPiece& numbers,
+                          const std::filesystem::path& path) {
+  MeshPiece mine;
+  fem::stage("write", [&] {
+    fields.cell_ints.push_back(
+        {"global_cell", {numbers.global_cells.begin(), numbers.global_cells.end()}});
+    // Point data are Float64; the ids are exact up to 2^53.
+    fields.point.push_back(
+        {"global_point", 1, {numbers.global_points.begin(), numbers.global_points.end()}});
+    mine = {piece, std::move(fields)};
+  });
+  write_pieces(std::move(mine), path, fem::ranks());
+}
+
 void write_solution(const PolyMesh& mesh, const MeshFields& fields,
                     const std::vector<Index>& cell_rank, const std::filesystem::path& path) {
   if (path.extension() != ".pvtu") {

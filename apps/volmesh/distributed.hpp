@@ -16,6 +16,7 @@
 #include "volmesh/fem/parallel.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/partitioned_io.hpp"
+#include "volmesh/octree_dist/rank_piece.hpp"
 
 namespace volmesh::cli {
 
@@ -46,6 +47,11 @@ std::vector<Index> partition_for_ranks(const PolyMesh& mesh);
 // Any rank's failure makes every rank throw.
 void write_solution(const PolyMesh& mesh, const MeshFields& fields,
                     const std::vector<Index>& cell_rank, const std::filesystem::path& path);
+
+// Writes a solution solved on the ranks' pieces (--partition octree): each rank its piece
+// with `fields` and the "global_cell" and "global_point" numbers, as write_solution does.
+void write_piece_solution(const PolyMesh& piece, MeshFields fields, const RankPiece& numbers,
+                          const std::filesystem::path& path);
 
 // Writes a .pvtu set of `pieces` pieces (fem::ranks(), or 1 on one rank), each rank its own
 // piece, rank 0 the summary once every piece exists (the stage "write"); every piece carries

@@ -1,5 +1,7 @@
 #include "mesh_pieces.hpp"
 
+#include <CLI/CLI.hpp>
+#include <iostream>
 #include <numeric>
 #include <utility>
 
@@ -20,6 +22,37 @@ std::string why_not_on_every_rank(const meshers::MesherInfo& method,
   if (method.name == "grid")
     return meshers::given<bool>(given, "tets").value_or(false) ? "grid --tets has no pieces" : "";
   return method.name + " does not mesh in pieces";
+}
+
+namespace {
+
+// The methods whose meshes follow an octree, partitioned by it under mpirun unless
+// --partition metis is given.
+bool octree_partition_by_default(const std::string& method) {
+  return method == "cutcell" || method == "staircase" || method == "grid";
+}
+
+}  // namespace
+
+void add_partition_option(CLI::App& app, std::string& partition) {
+  app.add_option("--partition", partition,
+                 "under mpirun: octree (every rank meshes its piece and solves on it; the "
+                 "default for cutcell, staircase and grid) or metis (rank 0 meshes, METIS "
+                 "partitions, every rank holds the whole mesh)")
+      ->check(CLI::IsMember({"metis", "octree"}));
+}
+
+bool partition_in_pieces(const std::string& partition, const std::string& method,
+                         const meshers::MethodOptions& given, const std::string& output) {
+  if (!fem::distributed_run() || partition == "metis") return false;
+  if (partition.empty() && (method.empty() || !octree_partition_by_default(method))) return false;
+  std::string why = method.empty() ? "a mesh read from a file"
+                                   : why_not_on_every_rank(meshers::find_mesher(method), given);
+  if (why.empty() && !output.empty() && std::filesystem::path(output).extension() != ".pvtu")
+    why = "the ranks write their pieces to a .pvtu, not " + output;
+  if (why.empty()) return true;
+  if (fem::rank() == 0) std::cerr << "note: " << why << ": rank 0 meshes, METIS partitions\n";
+  return false;
 }
 
 RankMesh mesh_on_every_rank(const meshers::MesherInfo& method, const Domain& domain,

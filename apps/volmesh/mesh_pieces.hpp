@@ -11,12 +11,27 @@
 #include "volmesh/meshers/registry.hpp"
 #include "volmesh/octree_dist/rank_piece.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace volmesh::cli {
 
 // Why `method` with the options `given` does not mesh on every rank ("" when it does): a
 // method without pieces, an option the pieces do not take, a build without p4est.
 std::string why_not_on_every_rank(const meshers::MesherInfo& method,
                                   const meshers::MethodOptions& given);
+
+// --partition metis|octree on `solve` and `study`.
+void add_partition_option(CLI::App& app, std::string& partition);
+
+// Whether a run under mpirun meshes `method` on every rank, each solving on its piece:
+// --partition octree (the default for cutcell, staircase and grid) for a method with pieces,
+// written to a .pvtu (`output`, when the run writes one). Otherwise rank 0 meshes and METIS
+// partitions, with a one-line note on rank 0's stderr when octree was asked for or is the
+// default. False outside mpirun and for a mesh read from a file (`method` empty).
+bool partition_in_pieces(const std::string& partition, const std::string& method,
+                         const meshers::MethodOptions& given, const std::string& output);
 
 struct RankMesh {
   RankPiece piece;

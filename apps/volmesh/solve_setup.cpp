@@ -102,6 +102,8 @@ fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem
   options.progress = progress;
   options.backend = solver.backend;
   options.cell_rank = solver.cell_rank;
+  options.piece_points = solver.piece_points;
+  options.piece_owner = solver.piece_owner;
   if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe, options);
   return fem::solve_poisson_fv(mesh, problem, options);
 }
@@ -115,6 +117,8 @@ fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProb
   options.progress = progress;
   options.backend = solver.backend;
   options.cell_rank = solver.cell_rank;
+  options.piece_points = solver.piece_points;
+  options.piece_owner = solver.piece_owner;
   return fem::solve_elasticity(mesh, problem, *space.fe, options);
 }
 

@@ -49,10 +49,14 @@ fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain&
 using SolverBackend = fem::LinearSolverOptions::Backend;
 void add_solver_option(CLI::App& app, SolverBackend& backend);
 
-// The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank).
+// The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank),
+// or, when each rank holds its piece of the mesh, the piece's point numbers and owners
+// (LinearSolverOptions::piece_points).
 struct Solver {
   SolverBackend backend = SolverBackend::automatic;
   const std::vector<Index>* cell_rank = nullptr;
+  const std::vector<std::int64_t>* piece_points = nullptr;
+  const std::vector<int>* piece_owner = nullptr;
 };
 
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,

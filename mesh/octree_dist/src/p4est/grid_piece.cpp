@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <string>
 
-#include "point_numbering.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/octree/octree.hpp"
@@ -125,9 +124,11 @@ RankPiece grid_piece(const Box3& box, int level) {
   hex.cell_region.assign(hex.cells.size(), 1);
   out.mesh = to_poly_mesh(hex);
 
-  octree_dist::PointNumbers numbers = octree_dist::number_points(keys, out.point_owner, MPI_COMM_WORLD);
-  out.global_points = std::move(numbers.id);
-  out.global_point_count = numbers.count;
+  for (const std::uint64_t key : keys) {
+    const GridPoint g = morton_decode(key);
+    out.global_points.push_back(g[0] + (n + 1) * (g[1] + (n + 1) * g[2]));
+  }
+  out.global_point_count = (n + 1) * (n + 1) * (n + 1);
   out.global_cell_count = n * n * n;
   return out;
 }

@@ -8,7 +8,8 @@
 namespace volmesh {
 
 // Collective over MPI_COMM_WORLD. Over all ranks the cells are structured_hex_mesh's with the
-// same numbers, points and boundary tags. Throws InputError in a build without p4est.
+// same numbers, points (with their numbers) and boundary tags. Throws InputError in a build
+// without p4est.
 RankPiece grid_piece(const Box3& box, int level);
 
 }  // namespace volmesh

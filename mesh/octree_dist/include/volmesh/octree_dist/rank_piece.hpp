@@ -12,9 +12,11 @@ struct RankPiece {
   // The rank's cells. A face shared with another rank's cell is a boundary face of the
   // piece, oriented out of it, tagged "procBoundary<rank>to<other>".
   PolyMesh mesh;
-  // Global numbers over 0 .. count - 1. A cell's is its index in the serial mesher's
-  // numbering. A point belongs to the lowest rank whose cells use it (point_owner); the
-  // ranks number the points they own one after the other, so each rank's are one stretch.
+  // Global numbers over 0 .. count - 1, each cell and point one number on every rank holding
+  // it. A cell's is its index in the serial mesher's numbering; a point's too where the
+  // mesher can tell it from the point alone (grid), otherwise the ranks number the points
+  // they own one after the other (staircase). A point belongs to the lowest rank whose cells
+  // use it (point_owner).
   std::vector<std::int64_t> global_cells, global_points;
   std::vector<int> point_owner;
   std::int64_t global_cell_count = 0, global_point_count = 0;
