@@ -1,8 +1,9 @@
 // [mpirun -np P] volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X
 //   --domain D --level N) [--space S] [--exact EXPR --source EXPR --k K] [--solver B]
-//   -o out.vtu|out.pvtu [--json] [--quiet] [PETSc options]
+//   [--partition metis|octree] -o out.vtu|out.pvtu [--json] [--quiet] [PETSc options]
 // One solve, written as a VTU (or a PVTU, one piece per rank) with the solution, its error
-// where an exact solution is known, and the regions. Under mpirun: distributed.hpp.
+// where an exact solution is known, and the regions. Under mpirun: distributed.hpp, and with
+// --partition octree mesh_pieces.hpp (every rank meshes and solves its piece).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>

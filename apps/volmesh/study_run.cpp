@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "distributed.hpp"
+#include "mesh_pieces.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/open_domain.hpp"
 
@@ -114,6 +115,9 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
     const std::string name = series_name(method.name, spec.options);
     // The space follows from the first level's mesh; every level has the same cell kinds.
     std::optional<SpaceChoice> space;
+    // Under mpirun with --partition octree, each level is meshed in pieces: this rank's.
+    const bool in_pieces = partition_in_pieces(spec.partition, method.name, spec.options, "");
+    RankPiece piece;
     const fem::MeshAtLevel mesh = [&](int level, const Progress& meshing) {
       meshers::MeshRequest request;
       request.domain_name = outcome.domain;
@@ -121,6 +125,14 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
       request.uniform = true;
       request.options = spec.options;
       request.progress = meshing;
+      if (in_pieces) {
+        RankMesh r = mesh_on_every_rank(method, *domain, request);
+        piece = std::move(r.piece);
+        fem::stage("setup", [&] {
+          if (!space) space = choose_space(spec.space, method.default_space, piece.mesh);
+        });
+        return fem::StudyMesh{std::move(piece.mesh), r.h, piece.global_cell_count};
+      }
       std::vector<double> h{0.0};
       PolyMesh m = mesh_on_rank_zero(
           [&] {
@@ -135,6 +147,9 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
       return fem::StudyMesh{std::move(m), h[0]};
     };
     const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {
+      if (in_pieces)
+        return solve_level(spec, kind, *domain, m, *space, solving,
+                           {spec.solver, nullptr, &piece.global_points, &piece.point_owner});
       // A distributed run partitions every level into one part per rank.
       const std::vector<Index> cell_rank =
           fem::distributed_run() ? partition_for_ranks(m) : std::vector<Index>{};
