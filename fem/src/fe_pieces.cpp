@@ -154,16 +154,7 @@ DistributedSystem piece_rows(const FeSpace& space, const PieceNodes& nodes, int 
       system.lower.selfadjointView<Eigen::Lower>();
   std::vector<std::pair<Index, double>> row;
   const auto local_row = [&](Index dof) {
-    row.clear();
-    double rhs = system.rhs[dof];
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(full, dof); it; ++it) {
-      const Index col = static_cast<Index>(it.col());
-      if (fixed[col])
-        rhs -= it.value() * fixed_values[col];
-      else
-        row.emplace_back(out.global[col], it.value());
-    }
-    return rhs;
+    return eliminated_row(full, system.rhs, dof, fixed, fixed_values, out.global, row);
   };
 
   // The partial rows of shared nodes go to their owners as (row, column, value) entries, the
