@@ -156,7 +156,7 @@ int run_mesh_alone(const MeshOptions& opt, const meshers::MesherInfo& info) {
 double faces_once(const PolyMesh& piece) {
   double count = 0.0;
   for (Index f = 0; f < piece.num_faces(); ++f)
-    count += piece.is_boundary(f) && piece.tag_names[piece.face_tag[f]].starts_with("procBoundary")
+    count += piece.is_boundary(f) && piece.tag_names[piece.face_tag[f]].starts_with(kPieceBoundaryPrefix)
                  ? 0.5
                  : 1.0;
   return count;

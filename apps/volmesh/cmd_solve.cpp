@@ -196,6 +196,8 @@ int run_solve(const SolveOptions& opt) {
   // The problem's set-up here and the solver's stages; the output fields count as error
   // evaluation (their "error" is u_h − u at every point).
   double problem_seconds = 0.0, fields_seconds = 0.0;
+  const std::vector<std::string> tags =
+      in.in_pieces ? boundary_tags_over_ranks(in.mesh) : in.mesh.tag_names;
   // What the problem finds wrong with a mesh file (a region without material data, a
   // boundary tag without a condition, a cell the space refuses) names the file.
   try {
@@ -203,7 +205,7 @@ int run_solve(const SolveOptions& opt) {
       fem::ElasticityProblem problem;
       fem::stage("setup", [&] {
         space = choose_space(opt.space, in.default_space, in.mesh);
-        problem = elasticity_problem(opt.problem, *in.domain, in.mesh);
+        problem = elasticity_problem(opt.problem, *in.domain, tags);
       });
       if (in.own_boundary) problem.to_true_boundary = nullptr;
       problem_seconds = seconds_since(setting_up);
@@ -216,7 +218,7 @@ int run_solve(const SolveOptions& opt) {
       fem::PoissonProblem problem;
       fem::stage("setup", [&] {
         space = choose_space(opt.space, in.default_space, in.mesh);
-        problem = poisson_problem(opt.problem, *in.domain, in.mesh, &warning);
+        problem = poisson_problem(opt.problem, *in.domain, tags, &warning);
       });
       if (in.own_boundary) problem.to_true_boundary = nullptr;
       if (!warning.empty() && rank_zero) {
@@ -351,7 +353,8 @@ Command add_solve_command(CLI::App& root) {
           },
           "FILE.vtu|FILE.pvtu"));
   add_solver_option(*app, opt->solver);
-  add_partition_option(*app, opt->partition);
+  // A mesh read from a file is partitioned by its pieces or by METIS.
+  add_partition_option(*app, opt->partition)->excludes(mesh);
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);

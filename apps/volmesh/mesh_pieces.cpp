@@ -2,7 +2,9 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <algorithm>
 #include <numeric>
+#include <set>
 #include <utility>
 
 #include "distributed.hpp"
@@ -34,8 +36,8 @@ bool octree_partition_by_default(const std::string& method) {
 
 }  // namespace
 
-void add_partition_option(CLI::App& app, std::string& partition) {
-  app.add_option("--partition", partition,
+CLI::Option* add_partition_option(CLI::App& app, std::string& partition) {
+  return app.add_option("--partition", partition,
                  "under mpirun: octree (every rank meshes its piece and solves on it; the "
                  "default for cutcell, staircase and grid) or metis (rank 0 meshes, METIS "
                  "partitions, every rank holds the whole mesh)")
@@ -53,6 +55,23 @@ bool partition_in_pieces(const std::string& partition, const std::string& method
   if (why.empty()) return true;
   if (fem::rank() == 0) std::cerr << "note: " << why << ": rank 0 meshes, METIS partitions\n";
   return false;
+}
+
+std::vector<std::string> boundary_tags_over_ranks(const PolyMesh& piece) {
+  std::vector<char> mine;
+  for (const std::string& name : piece.tag_names)
+    if (!name.starts_with(kPieceBoundaryPrefix)) {
+      mine.insert(mine.end(), name.begin(), name.end());
+      mine.push_back('\0');
+    }
+  std::set<std::string> names;
+  for (const std::vector<char>& from : fem::gather_bytes_to_all(mine))
+    for (auto at = from.begin(); at != from.end(); ++at) {
+      const auto end = std::find(at, from.end(), '\0');
+      names.emplace(at, end);
+      at = end;
+    }
+  return {names.begin(), names.end()};
 }
 
 RankMesh mesh_on_every_rank(const meshers::MesherInfo& method, const Domain& domain,

@@ -4,6 +4,8 @@
 // (each rank its stretch of the Morton curve). No rank holds more than its own piece.
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/io/mesh_io.hpp"
@@ -13,6 +15,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace volmesh::cli {
@@ -22,8 +25,8 @@ namespace volmesh::cli {
 std::string why_not_on_every_rank(const meshers::MesherInfo& method,
                                   const meshers::MethodOptions& given);
 
-// --partition metis|octree on `solve` and `study`.
-void add_partition_option(CLI::App& app, std::string& partition);
+// --partition metis|octree on `solve` and `study`; returns the option.
+CLI::Option* add_partition_option(CLI::App& app, std::string& partition);
 
 // Whether a run under mpirun meshes `method` on every rank, each solving on its piece:
 // --partition octree (the default for cutcell, staircase and grid) for a method with pieces,
@@ -37,6 +40,13 @@ struct RankMesh {
   RankPiece piece;
   double h = 0.0;  // the cell edge at the boundaries, as the method's MeshResult gives it
 };
+
+// The tags of the faces between pieces ("procBoundary<r>to<q>", part_boundary_name).
+inline constexpr std::string_view kPieceBoundaryPrefix = "procBoundary";
+
+// The boundary tags of every rank's piece but the faces between pieces, sorted: the serial
+// mesh's tags, which the problems give conditions. Collective.
+std::vector<std::string> boundary_tags_over_ranks(const PolyMesh& piece);
 
 // This rank's piece, collective, the stage "mesh" (fem::stage): a failure on any rank makes
 // every rank throw. Throws InputError on every rank when a rank would hold no cell.

@@ -67,19 +67,20 @@ fem::ProblemKind problem_kind(const ProblemSpec& spec) {
 }
 
 fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domain,
-                                    const PolyMesh& mesh, std::string* warning) {
-  if (!spec.user()) return fem::make_poisson_problem(spec.name, domain, mesh.tag_names);
+                                    const std::vector<std::string>& tag_names,
+                                    std::string* warning) {
+  if (!spec.user()) return fem::make_poisson_problem(spec.name, domain, tag_names);
   fem::UserPoissonProblem p =
-      fem::user_poisson_problem(spec.exact, spec.source, spec.k, domain, mesh.tag_names);
+      fem::user_poisson_problem(spec.exact, spec.source, spec.k, domain, tag_names);
   if (warning) *warning = p.warning;
   return std::move(p.problem);
 }
 
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
-                                          const PolyMesh& mesh) {
+                                          const std::vector<std::string>& tag_names) {
   if (spec.user())
     throw InputError("--exact/--source: user expressions define Poisson problems only");
-  return fem::make_elasticity_problem(spec.name, domain, mesh.tag_names);
+  return fem::make_elasticity_problem(spec.name, domain, tag_names);
 }
 
 void add_solver_option(CLI::App& app, SolverBackend& backend) {

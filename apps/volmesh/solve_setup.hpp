@@ -38,12 +38,14 @@ struct ProblemSpec {
 // Refuses a spec with both a name and expressions, or neither (InputError).
 fem::ProblemKind problem_kind(const ProblemSpec& spec);
 
-// The problem on a mesh of `domain` (its boundary tags get conditions). `warning` receives
-// the user problem's source check, if any.
+// The problem on a mesh of `domain` whose boundary tags (which get conditions) are
+// `tag_names`: the mesh's, or over all ranks for a mesh in pieces (boundary_tags_over_ranks).
+// `warning` receives the user problem's source check, if any.
 fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domain,
-                                    const PolyMesh& mesh, std::string* warning = nullptr);
+                                    const std::vector<std::string>& tag_names,
+                                    std::string* warning = nullptr);
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
-                                          const PolyMesh& mesh);
+                                          const std::vector<std::string>& tag_names);
 
 // --solver auto|eigen|petsc: who runs CG on the large systems (LinearSolverOptions::Backend).
 using SolverBackend = fem::LinearSolverOptions::Backend;

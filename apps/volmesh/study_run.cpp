@@ -52,18 +52,20 @@ std::string series_name(const std::string& method, const meshers::MethodOptions&
 }
 
 // The problem's set-up is the stage "setup" (fem::stage), the solve's own stages follow.
+// `tag_names`: the mesh's boundary tags (over all ranks for a mesh in pieces).
 fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
-                            const PolyMesh& mesh, const SpaceChoice& space,
-                            const Progress& progress, const Solver& solver) {
+                            const PolyMesh& mesh, const std::vector<std::string>& tag_names,
+                            const SpaceChoice& space, const Progress& progress,
+                            const Solver& solver) {
   fem::LevelSolve out;
   if (kind == fem::ProblemKind::elasticity) {
     fem::ElasticityProblem problem;
-    fem::stage("setup", [&] { problem = elasticity_problem(spec.problem, domain, mesh); });
+    fem::stage("setup", [&] { problem = elasticity_problem(spec.problem, domain, tag_names); });
     const fem::VectorSolution s = solve_vector(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   } else {
     fem::PoissonProblem problem;
-    fem::stage("setup", [&] { problem = poisson_problem(spec.problem, domain, mesh); });
+    fem::stage("setup", [&] { problem = poisson_problem(spec.problem, domain, tag_names); });
     const fem::ScalarSolution s = solve_scalar(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   }
@@ -148,12 +150,12 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
     };
     const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {
       if (in_pieces)
-        return solve_level(spec, kind, *domain, m, *space, solving,
+        return solve_level(spec, kind, *domain, m, boundary_tags_over_ranks(m), *space, solving,
                            {spec.solver, nullptr, &piece.global_points, &piece.point_owner});
       // A distributed run partitions every level into one part per rank.
       const std::vector<Index> cell_rank =
           fem::distributed_run() ? partition_for_ranks(m) : std::vector<Index>{};
-      return solve_level(spec, kind, *domain, m, *space, solving,
+      return solve_level(spec, kind, *domain, m, m.tag_names, *space, solving,
                          {spec.solver, fem::distributed_run() ? &cell_rank : nullptr});
     };
     const double share = 1.0 / static_cast<double>(methods.size());

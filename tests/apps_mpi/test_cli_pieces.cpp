@@ -103,7 +103,8 @@ TEST_F(CliPieces, SolvesOnThePiecesMatchSerial) {
        {"poisson --problem sine --method staircase --domain builtin:ball --level 4",
         "poisson --problem sine --method staircase --domain builtin:primitives --level 4",
         "poisson --problem sine --method grid --level 4",  // Q1
-        "elasticity --problem elastic-patch --method grid --level 3"}) {
+        "elasticity --problem elastic-patch --method grid --level 3",
+        "elasticity --problem lame --method staircase --domain builtin:thick-sphere --level 3"}) {
     SCOPED_TRACE(c);
     const fs::path serial = dir / "serial.vtu";
     const auto s = run_volmesh("solve " + c + " --solver petsc --json -o " + serial.string(), dir);
