@@ -96,15 +96,24 @@ void add_solver_option(CLI::App& app, SolverBackend& backend) {
       ->default_str("auto");
 }
 
-fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress,
-                                 const Solver& solver) {
+namespace {
+
+fem::LinearSolverOptions solver_options(const Progress& progress, const Solver& solver) {
   fem::LinearSolverOptions options;
   options.progress = progress;
   options.backend = solver.backend;
   options.cell_rank = solver.cell_rank;
   options.piece_points = solver.piece_points;
   options.piece_owner = solver.piece_owner;
+  return options;
+}
+
+}  // namespace
+
+fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
+                                 const SpaceChoice& space, const Progress& progress,
+                                 const Solver& solver) {
+  const fem::LinearSolverOptions options = solver_options(progress, solver);
   if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe, options);
   return fem::solve_poisson_fv(mesh, problem, options);
 }
@@ -114,12 +123,7 @@ fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProb
                                  const Solver& solver) {
   if (!space.fe)
     throw InputError("--space fv: finite volumes solve Poisson problems only");
-  fem::LinearSolverOptions options;
-  options.progress = progress;
-  options.backend = solver.backend;
-  options.cell_rank = solver.cell_rank;
-  options.piece_points = solver.piece_points;
-  options.piece_owner = solver.piece_owner;
+  const fem::LinearSolverOptions options = solver_options(progress, solver);
   return fem::solve_elasticity(mesh, problem, *space.fe, options);
 }
 
