@@ -178,7 +178,7 @@ int run_demo(const DemoOptions& opt) {
   step(5, "multi-material Poisson, k = region label, f = 1, u = 0 on the boundary");
   t = Clock::now();
   const ProblemSpec problem{"multi-material", "", "", 1.0};
-  const fem::PoissonProblem poisson = poisson_problem(problem, *domain, mesh);
+  const fem::PoissonProblem poisson = poisson_problem(problem, *domain, mesh.tag_names);
   const SpaceChoice space = choose_space("", mesher.default_space, mesh);
   const fem::ScalarSolution solution = [&] {
     ProgressLine progress("demo", opt.quiet);

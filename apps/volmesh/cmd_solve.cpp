@@ -1,17 +1,19 @@
 // [mpirun -np P] volmesh solve poisson|elasticity --problem NAME (--mesh M | --method X
 //   --domain D --level N) [--space S] [--exact EXPR --source EXPR --k K] [--solver B]
-//   -o out.vtu|out.pvtu [--json] [--quiet] [PETSc options]
+//   [--partition metis|octree] -o out.vtu|out.pvtu [--json] [--quiet] [PETSc options]
 // One solve, written as a VTU (or a PVTU, one piece per rank) with the solution, its error
-// where an exact solution is known, and the regions. Under mpirun: distributed.hpp.
+// where an exact solution is known, and the regions. Under mpirun: distributed.hpp, and with
+// --partition octree mesh_pieces.hpp (every rank meshes and solves its piece).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "volmesh/runs/distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
 #include "solver_option.hpp"
+#include "volmesh/runs/distributed.hpp"
+#include "volmesh/runs/mesh_pieces.hpp"
 #include "volmesh/runs/mesh_run.hpp"
 #include "volmesh/runs/solve_run.hpp"
 #include "volmesh/core/errors.hpp"
@@ -26,7 +28,7 @@ namespace volmesh::cli {
 namespace {
 
 struct SolveOptions {
-  std::string kind, mesh, method, domain, space, output;
+  std::string kind, mesh, method, domain, space, output, partition;
   int level = -1;
   meshers::MethodOptions given;
   bool json = false, quiet = false;
@@ -52,6 +54,9 @@ struct Input {
   double check_seconds = 0.0;  // of a mesh read from a file
   // Under mpirun, a partitioned PVTU's parts: each cell's rank. Empty: METIS partitions.
   std::vector<Index> cell_part;
+  // Under mpirun with --partition octree: `mesh` is this rank's piece, `piece` its numbers.
+  bool in_pieces = false;
+  RankPiece piece;
 };
 
 // Refuses a mesh read from a file that is not valid; numbers[1]: the check's seconds.
@@ -98,12 +103,22 @@ Input read_input(const SolveOptions& opt, const Progress& progress) {
   const std::string spec = opt.domain.empty() ? method.default_domain : opt.domain;
   in.domain_name = domain_display_name(spec);
   in.default_space = method.default_space;
+  meshers::MeshRequest request = uniform_request(in.domain_name, opt.level, opt.given,
+                                                 part_of(progress, 0.0, 1.0, "meshing: "));
+  if (opt.level < 0) request.level.reset();
+  if (partition_in_pieces(opt.partition, opt.method, opt.given, opt.output)) {
+    report(progress, "meshing on " + std::to_string(fem::ranks()) + " ranks", 0.0);
+    fem::stage("mesh", [&] { in.domain = open_domain(spec); });
+    RankMesh m = mesh_on_every_rank(method, *in.domain, request);
+    in.h = m.h;
+    in.mesh = std::move(m.piece.mesh);
+    in.piece = std::move(m.piece);
+    in.in_pieces = true;
+    return in;
+  }
   in.mesh = mesh_on_rank_zero(
       [&] {
         in.domain = open_domain(spec);
-        meshers::MeshRequest request = uniform_request(
-            in.domain_name, opt.level, opt.given, part_of(progress, 0.0, 1.0, "meshing: "));
-        if (opt.level < 0) request.level.reset();
         meshers::MeshResult m = meshers::mesh(method, *in.domain, request);
         numbers[0] = m.h;
         return std::move(m.mesh);
@@ -149,16 +164,21 @@ int run_solve(const SolveOptions& opt) {
   const Input in = read_input(opt, part_of(progress, 0.0, kMeshShare));
   const double mesh_seconds = seconds_since(start) - in.check_seconds;
   const Clock::time_point partitioning = Clock::now();
-  const std::vector<Index> cell_rank = !distributed              ? std::vector<Index>{}
-                                       : !in.cell_part.empty() ? in.cell_part
-                                                               : partition_for_ranks(in.mesh);
+  const std::vector<Index> cell_rank = !distributed || in.in_pieces ? std::vector<Index>{}
+                                       : !in.cell_part.empty()      ? in.cell_part
+                                                                    : partition_for_ranks(in.mesh);
   const double partition_seconds = seconds_since(partitioning);
   SolveRequest request{.kind = opt.kind,
                        .problem = opt.problem,
                        .space = opt.space,
                        .default_space = in.default_space,
                        .own_boundary = in.own_boundary,
-                       .solver = {opt.solver, distributed ? &cell_rank : nullptr}};
+                       .solver = {opt.solver, distributed && !in.in_pieces ? &cell_rank : nullptr}};
+  if (in.in_pieces) {
+    request.solver.piece_points = &in.piece.global_points;
+    request.solver.piece_owner = &in.piece.point_owner;
+    request.tag_names = boundary_tags_over_ranks(in.mesh);
+  }
   request.warn = [&](const std::string& warning) {
     if (!rank_zero) return;
     progress_line.clear();
@@ -178,7 +198,10 @@ int run_solve(const SolveOptions& opt) {
   const std::optional<fem::ErrorNorms>& errors = run.errors;
   const Clock::time_point writing = Clock::now();
   progress_line("writing " + opt.output, kWriteStart);
-  write_solution(in.mesh, run.fields, cell_rank, opt.output);
+  if (in.in_pieces)
+    write_piece_solution(in.mesh, std::move(run.fields), in.piece, opt.output);
+  else
+    write_solution(in.mesh, run.fields, cell_rank, opt.output);
   const double write_seconds = seconds_since(writing);
   progress_line.clear();
   const std::vector<std::pair<const char*, double>> stages{
@@ -197,12 +220,17 @@ int run_solve(const SolveOptions& opt) {
   const double total_max = fem::max_over_ranks(total);
   if (!rank_zero) return 0;
 
+  const std::int64_t cells = in.in_pieces ? in.piece.global_cell_count : in.mesh.num_cells();
+  const std::int64_t points = in.in_pieces ? in.piece.global_point_count : in.mesh.num_points();
   if (opt.json) {
     nlohmann::json j = solve_summary(request, run, in.domain_name, in.mesh);
+    j["cells"] = cells;
+    j["points"] = points;
     j["output"] = opt.output;
     j["seconds"] = seconds_json(stages, total);
     if (distributed) {
       j["ranks"] = fem::ranks();
+      j["partition"] = in.in_pieces ? "octree" : "metis";
       j["seconds_max"] = seconds_json(stages_max, total_max);
     }
     if (!opt.method.empty()) j["method"] = opt.method, j["h"] = in.h;
@@ -211,7 +239,7 @@ int run_solve(const SolveOptions& opt) {
     return 0;
   }
   std::cout << opt.output << ": " << opt.problem.label() << " on " << in.domain_name << ", "
-            << in.mesh.num_cells() << " cells, " << run.dofs << " DOFs (" << space.name() << "); "
+            << cells << " cells, " << run.dofs << " DOFs (" << space.name() << "); "
             << report.method << ", " << report.iterations << " iterations, residual "
             << report.residual << "; " << total << " s\n";
   if (errors)
@@ -275,6 +303,8 @@ Command add_solve_command(CLI::App& root) {
           },
           "FILE.vtu|FILE.pvtu"));
   add_solver_option(*app, opt->solver);
+  // A mesh read from a file is partitioned by its pieces or by METIS.
+  add_partition_option(*app, opt->partition)->excludes(mesh);
   app->add_flag("--json", opt->json, "print one JSON object on stdout");
   add_quiet_flag(*app, opt->quiet);
   mesh->excludes(method);

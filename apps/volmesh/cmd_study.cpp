@@ -1,5 +1,6 @@
 // volmesh study convergence --problem P (--method M | --methods a,b) --levels A..B
-//   [--space S] [--domain D] [method options, e.g. --tets] [--solver B] [--np P] -o dir
+//   [--space S] [--domain D] [method options, e.g. --tets] [--solver B] [--np P]
+//   [--partition metis|octree] -o dir
 //   [--json] [--quiet]
 // Meshes and solves each level, prints the table with pairwise rates and least-squares
 // slopes, and writes dir/convergence.csv, dir/convergence.png and dir/summary.json.
@@ -7,10 +8,10 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "volmesh/runs/distributed.hpp"
 #include "mesher_cli.hpp"
 #include "progress_line.hpp"
 #include "solver_option.hpp"
+#include "volmesh/runs/distributed.hpp"
 #include "volmesh/runs/study_run.hpp"
 #include "volmesh/core/errors.hpp"
 
@@ -92,6 +93,7 @@ Command add_study_command(CLI::App& root) {
   add_mesher_options(*app, opt->spec.options, false);
   app->add_option("-o,--output", opt->output, "output directory")->required();
   add_solver_option(*app, opt->spec.solver);
+  add_partition_option(*app, opt->spec.partition);
   app->add_option("--np", opt->np,
                   "solve every level on P ranks: runs itself again under mpirun -np P")
       ->check(CLI::PositiveNumber);

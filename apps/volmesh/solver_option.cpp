@@ -14,4 +14,12 @@ void add_solver_option(CLI::App& app, SolverBackend& backend) {
       ->default_str("auto");
 }
 
+CLI::Option* add_partition_option(CLI::App& app, std::string& partition) {
+  return app.add_option("--partition", partition,
+                        "under mpirun: octree (every rank meshes its piece and solves on it; the "
+                        "default for cutcell, staircase and grid) or metis (rank 0 meshes, METIS "
+                        "partitions, every rank holds the whole mesh)")
+      ->check(CLI::IsMember({"metis", "octree"}));
+}
+
 }  // namespace volmesh::cli

@@ -37,6 +37,22 @@ Distribution distribute(const FeSpace& space, const std::vector<Index>& cell_ran
   return d;
 }
 
+double eliminated_row(const Eigen::SparseMatrix<double, Eigen::RowMajor>& full,
+                      const Eigen::VectorXd& rhs, Index dof, const std::vector<char>& fixed,
+                      const Eigen::VectorXd& fixed_values, const std::vector<Index>& global,
+                      std::vector<std::pair<Index, double>>& row) {
+  row.clear();
+  double out = rhs[dof];
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(full, dof); it; ++it) {
+    const Index col = static_cast<Index>(it.col());
+    if (fixed[col])
+      out -= it.value() * fixed_values[col];
+    else
+      row.emplace_back(global[col], it.value());
+  }
+  return out;
+}
+
 DistributedSystem distributed_rows(const FeSpace& space, int components,
                                    const Distribution& distribution, const GlobalSystem& system,
                                    const std::vector<char>& fixed,
@@ -75,15 +91,8 @@ DistributedSystem distributed_rows(const FeSpace& space, int components,
   Index local = 0;
   for (Index dof = 0; dof < ndof; ++dof) {
     if (fixed[dof] || owner_of(dof) != me) continue;
-    double rhs = system.rhs[dof];
-    row.clear();
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(full, dof); it; ++it) {
-      const Index col = static_cast<Index>(it.col());
-      if (fixed[col])
-        rhs -= it.value() * fixed_values[col];
-      else
-        row.emplace_back(out.global[col], it.value());
-    }
+    const double rhs =
+        eliminated_row(full, system.rhs, dof, fixed, fixed_values, out.global, row);
     std::sort(row.begin(), row.end());
     for (const auto& [col, value] : row) {
       rows.columns.push_back(col);

@@ -8,6 +8,8 @@
 // eliminated: the preallocation is exact and no value goes to another rank. The solution is
 // then gathered to every rank, and each rank evaluates its own cells.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <utility>
 #include <vector>
 
 #include "fe_assembly.hpp"
@@ -37,6 +39,14 @@ DistributedSystem distributed_rows(const FeSpace& space, int components,
                                    const Distribution& distribution, const GlobalSystem& system,
                                    const std::vector<char>& fixed,
                                    const Eigen::VectorXd& fixed_values, LinearSolveReport& report);
+
+// Row `dof` of the symmetric system `full` as (global column, value) entries in `row`, by the
+// `global` numbers of the free unknowns; the fixed columns go to the right-hand side: returns
+// rhs[dof] minus them.
+double eliminated_row(const Eigen::SparseMatrix<double, Eigen::RowMajor>& full,
+                      const Eigen::VectorXd& rhs, Index dof, const std::vector<char>& fixed,
+                      const Eigen::VectorXd& fixed_values, const std::vector<Index>& global,
+                      std::vector<std::pair<Index, double>>& row);
 
 // The whole solution on every rank. Collective. Fills report as solve_spd does.
 Eigen::VectorXd solve_distributed(const DistributedSystem& system, const std::vector<char>& fixed,

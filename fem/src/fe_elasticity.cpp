@@ -96,7 +96,7 @@ VectorSolution solve_elasticity(const PolyMesh& mesh, const ElasticityProblem& p
       },
       options, start, out.solve);
   const Clock::time_point results = Clock::now();
-  out.dofs = 3 * field.space->num_nodes();
+  out.dofs = 3 * static_cast<Index>(field.nodes);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   out.point_values.assign(mesh.num_points(), Vec3(nan, nan, nan));
   for (Index p = 0; p < mesh.num_points(); ++p)
@@ -122,7 +122,8 @@ VectorSolution solve_elasticity(const PolyMesh& mesh, const ElasticityProblem& p
   }
   if (problem.exact)
     out.errors = detail::error_norms(cells, bool(problem.exact_gradient),
-                                     detail::nodal_max_error<3>(field, problem.exact));
+                                     detail::nodal_max_error<3>(field, problem.exact),
+                                     field.in_pieces);
   out.solve.errors_seconds = seconds_since(results);
   return out;
 }

@@ -61,7 +61,7 @@ ScalarSolution solve_poisson(const PolyMesh& mesh, const PoissonProblem& problem
       },
       options, start, out.solve);
   const Clock::time_point results = Clock::now();
-  out.dofs = field.space->num_nodes();
+  out.dofs = static_cast<Index>(field.nodes);
   out.point_values.assign(mesh.num_points(), std::numeric_limits<double>::quiet_NaN());
   for (Index p = 0; p < mesh.num_points(); ++p)
     if (field.space->point_node[p] != kNoIndex)
@@ -83,7 +83,8 @@ ScalarSolution solve_poisson(const PolyMesh& mesh, const PoissonProblem& problem
     out.cell_values[c] = cells[c].mean / cells[c].volume;
   if (problem.exact)
     out.errors = detail::error_norms(cells, bool(problem.exact_gradient),
-                                     detail::nodal_max_error<1>(field, problem.exact));
+                                     detail::nodal_max_error<1>(field, problem.exact),
+                                     field.in_pieces);
   out.solve.errors_seconds = seconds_since(results);
   return out;
 }

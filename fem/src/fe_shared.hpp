@@ -6,10 +6,12 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fe_space.hpp"
 #include "volmesh/core/errors.hpp"
+#include "volmesh/fem/parallel.hpp"
 #include "volmesh/fem/problem.hpp"
 #include "volmesh/fem/solution.hpp"
 
@@ -30,8 +32,11 @@ std::vector<T> per_cell(const PolyMesh& mesh, const std::map<Index, T>& by_regio
   return out;
 }
 
-// The condition of every boundary tag (nullptr for a tag no boundary face uses); throws
-// InputError naming the first used tag without one.
+// The tags of the faces between the pieces of a mesh ("procBoundary<r>to<q>").
+inline constexpr std::string_view kPieceBoundaryPrefix = "procBoundary";
+
+// The condition of every boundary tag (nullptr for a tag no boundary face uses, and for the
+// faces between pieces); throws InputError naming the first used tag without one.
 template <class Condition>
 std::vector<const Condition*> conditions_per_tag(const PolyMesh& mesh,
                                                  const std::map<std::string, Condition>& by_name) {
@@ -45,7 +50,8 @@ std::vector<const Condition*> conditions_per_tag(const PolyMesh& mesh,
       used[tag] = 1;
     }
   for (std::size_t t = 0; t < used.size(); ++t) {
-    if (!used[t]) continue;
+    // Faces between the pieces of a mesh held in pieces lie inside the domain.
+    if (!used[t] || mesh.tag_names[t].starts_with(kPieceBoundaryPrefix)) continue;
     const auto it = by_name.find(mesh.tag_names[t]);
     if (it == by_name.end())
       throw InputError("no boundary condition for boundary tag '" + mesh.tag_names[t] + "'");
@@ -71,14 +77,18 @@ void add_boundary_load(const PolyMesh& mesh, const FeSpace& space, int component
                        const BoundaryData& data, Eigen::VectorXd& rhs);
 
 // The norms from per-cell integrals of the squared errors (fields l2 and h1 of each cell's
-// result), summed in cell order, and the nodal maximum.
+// result), summed in cell order (and over the ranks when each holds a piece of the mesh), and
+// the nodal maximum.
 template <class CellResult>
-ErrorNorms error_norms(const std::vector<CellResult>& cells, bool with_gradient, double linf) {
-  double l2 = 0.0, h1 = 0.0;
+ErrorNorms error_norms(const std::vector<CellResult>& cells, bool with_gradient, double linf,
+                       bool over_ranks = false) {
+  double sums[2] = {0.0, 0.0};  // l2², h1²
   for (const CellResult& r : cells) {
-    l2 += r.l2;
-    h1 += r.h1;
+    sums[0] += r.l2;
+    sums[1] += r.h1;
   }
+  if (over_ranks) sum_over_ranks(sums, 2);
+  const double l2 = sums[0], h1 = sums[1];
   ErrorNorms e;
   e.l2 = std::sqrt(l2);
   if (with_gradient) e.h1 = std::sqrt(h1);

@@ -12,6 +12,7 @@
 
 #include "fe_assembly.hpp"
 #include "fe_distributed.hpp"
+#include "fe_pieces.hpp"
 #include "fe_shared.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/fem/linear_solver.hpp"
@@ -78,11 +79,18 @@ struct Essential<VectorBoundaryCondition> {
       "determined only up to a rigid motion";
 };
 
+template <class Condition>
+bool has_essential(const TagConditions<Condition>& conditions) {
+  return std::find(conditions.essential.begin(), conditions.essential.end(), 1) !=
+         conditions.essential.end();
+}
+
 // Throws InputError (Essential::missing) when no boundary face carries an essential
-// condition.
+// condition (require_essential; a piece of a mesh may have none of its own).
 template <class Condition>
 TagConditions<Condition> split_conditions(const PolyMesh& mesh,
-                                          const std::map<std::string, Condition>& by_name) {
+                                          const std::map<std::string, Condition>& by_name,
+                                          bool require_essential = true) {
   TagConditions<Condition> out;
   out.of_tag = conditions_per_tag(mesh, by_name);
   out.essential.assign(out.of_tag.size(), 0);
@@ -92,8 +100,7 @@ TagConditions<Condition> split_conditions(const PolyMesh& mesh,
       out.essential[t] = out.of_tag[t]->kind == Essential<Condition>::kind;
       out.natural[t] = !out.essential[t];
     }
-  if (std::find(out.essential.begin(), out.essential.end(), 1) == out.essential.end())
-    throw InputError(Essential<Condition>::missing);
+  if (require_essential && !has_essential(out)) throw InputError(Essential<Condition>::missing);
   return out;
 }
 
@@ -120,13 +127,17 @@ inline const CellPoints& load_points(const FeSpace& space, Index c, LocalWork& w
 // A solved field: its space, the cells' internal rows (which recover the condensed internal
 // unknowns) and the nodal unknowns. own_cell: in a distributed solve, the cells this rank
 // evaluates (the others have no internal rows here); empty: all. node_owner: in a distributed
-// solve, the rank owning each node; empty otherwise.
+// solve, the rank owning each node; empty otherwise. in_pieces: the mesh is this rank's
+// piece (LinearSolverOptions::piece_points), whose cells are all its own; nodes: over all
+// ranks.
 struct SolvedField {
   std::unique_ptr<FeSpace> space;
   InternalRows internal_rows;
   Eigen::VectorXd u;
   std::vector<char> own_cell;
   std::vector<int> node_owner;
+  bool in_pieces = false;
+  std::int64_t nodes = 0;
 };
 
 // Builds the space, assembles the local systems local(space, c, work) and the natural loads,
@@ -148,6 +159,9 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
     return s;
   };
   SolvedField out;
+  out.in_pieces = options.piece_points != nullptr;
+  PieceNodes piece;
+  bool essential = false;
   Distribution distribution;
   GlobalSystem system;
   std::vector<char> fixed;
@@ -155,7 +169,8 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
   DistributedSystem rows;  // a distributed solve's
   double space_seconds = 0.0, assembly_seconds = 0.0, boundary_seconds = 0.0;
   stage("assembly", [&] {
-    const TagConditions<Condition> conditions = split_conditions(mesh, boundary);
+    const TagConditions<Condition> conditions = split_conditions(mesh, boundary, !out.in_pieces);
+    essential = has_essential(conditions);
     volmesh::report(options.progress, "assembly", 0.0);
     out.space = make_space(mesh, space_kind, to_true_boundary);
     const FeSpace& space = *out.space;
@@ -193,12 +208,27 @@ SolvedField solve_field(const PolyMesh& mesh, Space space_kind,
     if (options.cell_rank)
       rows = distributed_rows(space, C, distribution, system, fixed, fixed_values, report);
   });
+  if (out.in_pieces) {
+    // The ranks' exchanges: the nodes they share, the fixed ones, the rows (fe_pieces.hpp).
+    if (max_over_ranks(essential) == 0.0) throw InputError(Essential<Condition>::missing);
+    stage("assembly", [&] {
+      piece = piece_nodes(*out.space, options);
+      agree_fixed(piece, C, fixed, fixed_values);
+      boundary_seconds += stage_seconds();
+      rows = piece_rows(*out.space, piece, C, system, fixed, fixed_values, report);
+    });
+    system = {};
+  }
   volmesh::report(options.progress, "linear solve", kLinearSolveStart);
-  out.u = options.cell_rank
-              ? solve_distributed(rows, fixed, fixed_values, options, report)
-              : solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options,
-                                      report, {C, &out.space->node_point});
-  out.node_owner = std::move(distribution.node_owner);
+  if (out.in_pieces)
+    out.u = solve_piece(piece, rows, fixed, fixed_values, options, report);
+  else
+    out.u = options.cell_rank
+                ? solve_distributed(rows, fixed, fixed_values, options, report)
+                : solve_spd_constrained(system.lower, system.rhs, fixed, fixed_values, options,
+                                        report, {C, &out.space->node_point});
+  out.node_owner = out.in_pieces ? std::move(piece.owner) : std::move(distribution.node_owner);
+  out.nodes = out.in_pieces ? piece.count : out.space->num_nodes();
   report.setup_seconds += space_seconds + boundary_seconds;
   report.assembly_seconds += assembly_seconds;
   return out;
@@ -296,7 +326,7 @@ std::vector<CellResult> integrate_cells(const SolvedField& field, Rule rule, con
       integrate_points<C>(work.load, local_u, c, fn, out[c]);
     });
   });
-  if (!field.own_cell.empty()) {
+  if (!field.own_cell.empty() && !field.in_pieces) {
     static_assert(sizeof(CellResult) % sizeof(double) == 0, "a cell result is doubles only");
     sum_over_ranks(reinterpret_cast<double*>(out.data()),
                    out.size() * (sizeof(CellResult) / sizeof(double)));

@@ -189,6 +189,32 @@ std::vector<double> gather_to_all(const double* mine, std::size_t count) {
   return out;
 }
 
+std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& to) {
+  if (ranks() == 1) return to;
+  const int count = ranks();
+  std::vector<int> send_count(count), receive_count(count), send_at(count + 1, 0),
+      receive_at(count + 1, 0);
+  for (int r = 0; r < count; ++r) {
+    if (to[r].size() > std::size_t(kMaxIndex))
+      throw std::runtime_error("exchange: more values than 32-bit counts allow");
+    send_count[r] = static_cast<int>(to[r].size());
+  }
+  MPI_Alltoall(send_count.data(), 1, MPI_INT, receive_count.data(), 1, MPI_INT, PETSC_COMM_WORLD);
+  for (int r = 0; r < count; ++r) {
+    send_at[r + 1] = send_at[r] + send_count[r];
+    receive_at[r + 1] = receive_at[r] + receive_count[r];
+  }
+  std::vector<double> sent, received(receive_at[count]);
+  sent.reserve(send_at[count]);
+  for (const std::vector<double>& v : to) sent.insert(sent.end(), v.begin(), v.end());
+  MPI_Alltoallv(sent.data(), send_count.data(), send_at.data(), MPI_DOUBLE, received.data(),
+                receive_count.data(), receive_at.data(), MPI_DOUBLE, PETSC_COMM_WORLD);
+  std::vector<std::vector<double>> from(count);
+  for (int r = 0; r < count; ++r)
+    from[r].assign(received.begin() + receive_at[r], received.begin() + receive_at[r + 1]);
+  return from;
+}
+
 namespace {
 
 void broadcast_from(std::vector<char>& bytes, int root, MPI_Comm comm = PETSC_COMM_WORLD) {
@@ -277,6 +303,9 @@ void sum_over_ranks(double*, std::size_t) {}
 double max_over_ranks(double value) { return value; }
 std::vector<double> gather_to_all(const double* mine, std::size_t count) {
   return std::vector<double>(mine, mine + count);
+}
+std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& to) {
+  return to;
 }
 void broadcast(std::vector<char>&) {}
 std::vector<std::vector<char>> gather_bytes_to_all(const std::vector<char>& mine) {

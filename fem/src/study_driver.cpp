@@ -24,7 +24,7 @@ ConvergenceSeries run_convergence_study(const std::string& label, int first_leve
     StudyMesh m = mesh_at_level(level, part_of(progress, begin, meshed, stage + "meshing: "));
     r.mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.h = m.h;
-    r.cells = m.mesh.num_cells();
+    r.cells = m.cells >= 0 ? static_cast<Index>(m.cells) : m.mesh.num_cells();
     LevelSolve s = solve_on_mesh(m.mesh, part_of(progress, meshed, begin + share,
                                                  stage + "solving " + std::to_string(r.cells) +
                                                      " cells: "));

@@ -96,4 +96,15 @@ inline void expect_one_error(const RunResult& r, const std::string& what) {
   expect_one_error_line(r.err, what);
 }
 
+// Every one of `ranks` ranks ended by itself with exit 1, rank 0 printed `what` on one line,
+// and neither the output nor its pieces' directory exists.
+inline void expect_all_failed(const RanksResult& r, int ranks, const std::string& what,
+                              const std::filesystem::path& out) {
+  EXPECT_NE(r.run.exit_code, 124) << "the run hung: " << r.run.err;
+  EXPECT_EQ(r.rank_exit, std::vector<int>(ranks, 1)) << r.run.err;
+  expect_one_error_line(r.run.err, what);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(out.parent_path() / out.stem()));
+}
+
 }  // namespace volmesh::test

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "pvtu_compare.hpp"
 #include "run_mpi.hpp"
 
 namespace volmesh {
@@ -25,30 +26,11 @@ using test::petsc_built;
 using test::run_mpi;
 using test::run_volmesh;
 
-// The relative tolerance of the solves (LinearSolverOptions::tolerance 1e-10) leaves the
-// solutions of two solvers this close, relative to the solution's size.
-constexpr double kSolutionAgreement = 1e-7;
 // CG + BoomerAMG's iteration counts over refinement stay within this fraction of their mean.
 constexpr double kFlatIterations = 0.2;
 
-nlohmann::json compare_files(const fs::path& serial, const fs::path& parallel) {
-  const std::string cmd = "/usr/bin/python3 '" + std::string(VOLMESH_TEST_SOURCE) +
-                          "/apps/external/pvtu_compare.py' " + serial.string() + " " +
-                          parallel.string() + " > " + (serial.parent_path() / "cmp.json").string();
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << " (`make test` installs python3-vtk9)";
-  return nlohmann::json::parse(test::slurp(serial.parent_path() / "cmp.json"));
-}
-
-// Every array of the serial file is in the parallel one, equal to the solver tolerance.
-void expect_same_solution(const nlohmann::json& cmp) {
-  EXPECT_EQ(cmp["serial_cells"], cmp["parallel_cells"]) << cmp;
-  EXPECT_TRUE(cmp["cells_once"].get<bool>()) << cmp;
-  for (const auto& [name, a] : cmp["arrays"].items()) {
-    ASSERT_FALSE(a.is_null()) << name << " missing: " << cmp;
-    EXPECT_LE(a["diff"].get<double>(), kSolutionAgreement * std::max(1.0, a["max"].get<double>()))
-        << name << ": " << cmp;
-  }
-}
+using test::compare_files;
+using test::expect_same_solution;
 
 using CliDistributed = test::MpiTest;
 

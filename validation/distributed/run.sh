@@ -9,7 +9,12 @@
 #      stencil (the like-for-like one: whole octree cells give our rows its 27 entries), each
 #      with our BoomerAMG defaults and with the classical tuning; ours is compared with the
 #      faster setting of each;
-#   4. elasticity on one rank: hypre nodal with our defaults and two variants, and GAMG.
+#   4. elasticity on one rank: hypre nodal with our defaults and two variants, and GAMG;
+#   5. meshing and solving in pieces (--partition octree; pieces.py): the pieces of 1, 2 and 4
+#      ranks against the serial mesh through VTK's PVTU reader (cells, region volumes) and
+#      the solution against the serial one; each rank's peak memory (/usr/bin/time) and the
+#      meshing time on 2 ranks against one process, at PIECES_LEVEL (7).
+# SECTIONS=pieces runs section 5 alone.
 # DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶), LEVELS ("4 5 6 7")
 # and ELASTICITY_LEVEL (6, ~2.8·10⁵ unknowns) choose the cases. Prints the report and writes
 # it to $OUT/report.md (OUT=dir, default build/validation-distributed).
@@ -33,6 +38,44 @@ if [ ! -x "$VOLMESH" ]; then
   cmake --build "$BUILD" -j "$(nproc)" --target volmesh > "$OUT/build.log" 2>&1
 fi
 "$VOLMESH" --version | grep -q PETSc || { echo "volmesh was built without PETSc" >&2; exit 1; }
+
+# Section 5: meshing and solving in pieces.
+PIECES_LEVEL=${PIECES_LEVEL:-7}
+pieces() {
+  local dir=$OUT/pieces
+  mkdir -p "$dir"
+  "$VOLMESH" --version | grep -q "p4est 2" || { echo "volmesh was built without p4est" >&2; exit 1; }
+  # The same mesh and solution on 1, 2 and 4 ranks (4 oversubscribed here).
+  local mesh="staircase $DOMAIN --level 5" solve="poisson --problem sine --domain $DOMAIN --level 5"
+  "$VOLMESH" mesh $mesh -o "$dir/mesh.vtu" --quiet > /dev/null
+  "$VOLMESH" solve $solve --method staircase --solver petsc -o "$dir/u.vtu" --json --quiet > "$dir/u.json"
+  "$VOLMESH" solve poisson --problem sine --method grid --level 5 --solver petsc -o "$dir/g.vtu" \
+    --quiet > /dev/null
+  for np in 1 2 4; do
+    $MPIRUN -np $np "$VOLMESH" mesh $mesh -o "$dir/mesh$np.pvtu" --quiet > /dev/null
+    $MPIRUN -np $np "$VOLMESH" solve $solve --method staircase -o "$dir/u$np.pvtu" --json --quiet \
+      > "$dir/u$np.json"
+    $MPIRUN -np $np "$VOLMESH" solve poisson --problem sine --method grid --level 5 \
+      -o "$dir/g$np.pvtu" --quiet > /dev/null
+    /usr/bin/python3 tests/apps/external/pvtu_compare.py "$dir/g.vtu" "$dir/g$np.pvtu" > "$dir/g$np.cmp.json"
+  done
+  # Peak memory per process and time: one process, then each of 2 ranks (its own time file).
+  local big="solve poisson --problem sine --method staircase --domain $DOMAIN --level $PIECES_LEVEL"
+  local meshing="mesh staircase $DOMAIN --level $PIECES_LEVEL"
+  /usr/bin/time -v -o "$dir/rss-solve-serial" "$VOLMESH" $big -o "$dir/big.vtu" --json --quiet \
+    > "$dir/big-serial.json"
+  $MPIRUN -np 2 sh -c 'exec /usr/bin/time -v -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' "$dir/rss-solve-2" \
+    "$VOLMESH" $big -o "$dir/big.pvtu" --json --quiet > "$dir/big-2.json"
+  /usr/bin/time -v -o "$dir/rss-mesh-serial" "$VOLMESH" $meshing -o "$dir/bigmesh.vtu" --json --quiet \
+    > "$dir/bigmesh-serial.json"
+  $MPIRUN -np 2 sh -c 'exec /usr/bin/time -v -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' "$dir/rss-mesh-2" \
+    "$VOLMESH" $meshing -o "$dir/bigmesh.pvtu" --json --quiet > "$dir/bigmesh-2.json"
+  /usr/bin/python3 validation/distributed/pieces.py "$dir" "$PIECES_LEVEL" | tee "$OUT/pieces.md"
+}
+if [ "${SECTIONS:-all}" = pieces ]; then
+  pieces
+  exit 0
+fi
 mpicc -O2 validation/distributed/poisson_anchor.c $(pkg-config --cflags --libs PETSc) -o "$OUT/anchor"
 
 CASE="solve poisson --problem sine --method cutcell --domain $DOMAIN"
@@ -153,3 +196,4 @@ for i, name in enumerate(names):
     print(f"| {name} | {e['linear_solver']} | {e['iterations']} | {e['seconds']['preconditioner']:.2f} | "
           f"{e['seconds']['solve']:.2f} |")
 PY
+pieces

@@ -147,12 +147,16 @@ PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Ind
   return mesh;
 }
 
+void require_cell_per_rank(std::int64_t cells) {
+  const int ranks = fem::ranks();
+  if (ranks > cells)
+    throw InputError(std::to_string(ranks) + " ranks for a mesh of " + std::to_string(cells) +
+                     " cells: give every rank at least one cell (fewer ranks, or a finer mesh)");
+}
+
 std::vector<Index> partition_for_ranks(const PolyMesh& mesh) {
   const int ranks = fem::ranks();
-  if (ranks > mesh.num_cells())
-    throw InputError(std::to_string(ranks) + " ranks for a mesh of " +
-                     std::to_string(mesh.num_cells()) +
-                     " cells: give every rank at least one cell (fewer ranks, or a finer mesh)");
+  require_cell_per_rank(mesh.num_cells());
   std::vector<Index> cell_rank;
   std::vector<char> bytes;
   fem::stage("partition", [&] {
@@ -197,6 +201,38 @@ MeshFields piece_fields(const MeshFields& fields, const PartMesh& part) {
 
 }  // namespace
 
+void write_pieces(MeshPiece mine, const std::filesystem::path& path, int pieces) {
+  std::unique_ptr<PvtuSet> set;
+  std::vector<char> directory;
+  fem::stage("write", [&] {
+    if (fem::rank() != 0) return;
+    set = std::make_unique<PvtuSet>(path);
+    const std::string name = set->pieces_directory().string();
+    directory.assign(name.begin(), name.end());
+  });
+  fem::broadcast(directory);
+  fem::stage("write", [&] {
+    write_pvtu_piece(mine, fem::rank(), std::string(directory.begin(), directory.end()), path);
+  });
+  fem::stage("write", [&] {
+    if (fem::rank() == 0) set->commit(mine.fields, pieces);
+  });
+}
+
+void write_piece_solution(const PolyMesh& piece, MeshFields fields, const RankPiece& numbers,
+                          const std::filesystem::path& path) {
+  MeshPiece mine;
+  fem::stage("write", [&] {
+    fields.cell_ints.push_back(
+        {"global_cell", {numbers.global_cells.begin(), numbers.global_cells.end()}});
+    // Point data are Float64; the ids are exact up to 2^53.
+    fields.point.push_back(
+        {"global_point", 1, {numbers.global_points.begin(), numbers.global_points.end()}});
+    mine = {piece, std::move(fields)};
+  });
+  write_pieces(std::move(mine), path, fem::ranks());
+}
+
 void write_solution(const PolyMesh& mesh, const MeshFields& fields,
                     const std::vector<Index>& cell_rank, const std::filesystem::path& path) {
   if (path.extension() != ".pvtu") {
@@ -208,26 +244,13 @@ void write_solution(const PolyMesh& mesh, const MeshFields& fields,
   const int ranks = cell_rank.empty() ? 1 : fem::ranks();
   const std::vector<Index> one_part(cell_rank.empty() ? mesh.num_cells() : 0, 0);
   const std::vector<Index>& parts = cell_rank.empty() ? one_part : cell_rank;
-  std::unique_ptr<PvtuSet> set;
-  std::vector<char> directory;
+  MeshPiece piece;
   fem::stage("write", [&] {
-    if (fem::rank() != 0) return;
-    set = std::make_unique<PvtuSet>(path);
-    const std::string name = set->pieces_directory().string();
-    directory.assign(name.begin(), name.end());
+    std::vector<PartMesh> split = split_mesh(mesh, parts, ranks);
+    PartMesh& mine = split[fem::rank()];
+    piece = {std::move(mine.mesh), piece_fields(fields, mine)};
   });
-  fem::broadcast(directory);
-  MeshFields arrays;
-  fem::stage("write", [&] {
-    std::vector<PartMesh> pieces = split_mesh(mesh, parts, ranks);
-    PartMesh& mine = pieces[fem::rank()];
-    MeshPiece piece{std::move(mine.mesh), piece_fields(fields, mine)};
-    write_pvtu_piece(piece, fem::rank(), std::string(directory.begin(), directory.end()), path);
-    arrays = std::move(piece.fields);
-  });
-  fem::stage("write", [&] {
-    if (fem::rank() == 0) set->commit(arrays, ranks);
-  });
+  write_pieces(std::move(piece), path, ranks);
 }
 
 namespace {

@@ -52,9 +52,8 @@ nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validi
   return regions;
 }
 
-nlohmann::json mesh_summary(const std::string& method, const meshers::MeshRequest& request,
-                            const PolyMesh& mesh, const nlohmann::json& mesher_summary,
-                            double seconds, const ValidityReport& validity) {
+nlohmann::json request_summary(const std::string& method, const meshers::MeshRequest& request,
+                               double seconds) {
   nlohmann::json j{{"method", method},
                    {"domain", request.domain_name},
                    {"base_level", meshers::given<std::int64_t>(request.options, "base-level")
@@ -62,11 +61,18 @@ nlohmann::json mesh_summary(const std::string& method, const meshers::MeshReques
                    {"cells_between_levels",
                     meshers::given<std::int64_t>(request.options, "cells-between-levels")
                         .value_or(OctreeOptions{}.cells_between_levels)},
-                   {"time_seconds", seconds},
-                   {"regions", region_summary(mesh, validity)},
-                   {"validity", to_json(validity)}};
+                   {"time_seconds", seconds}};
   if (request.level) j["level"] = *request.level;
   if (request.size) j["size"] = *request.size;
+  return j;
+}
+
+nlohmann::json mesh_summary(const std::string& method, const meshers::MeshRequest& request,
+                            const PolyMesh& mesh, const nlohmann::json& mesher_summary,
+                            double seconds, const ValidityReport& validity) {
+  nlohmann::json j = request_summary(method, request, seconds);
+  j["regions"] = region_summary(mesh, validity);
+  j["validity"] = to_json(validity);
   j.update(mesher_summary);
   return j;
 }

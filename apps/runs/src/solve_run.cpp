@@ -32,12 +32,14 @@ SolveRun solve_problem(const SolveRequest& request, const Domain& domain, const 
     return part_of(progress, 0.0, 1.0,
                    "solving " + request.kind + " (" + out.space.name() + "): ");
   };
+  const std::vector<std::string>& tags =
+      request.tag_names.empty() ? mesh.tag_names : request.tag_names;
   const Clock::time_point setting_up = Clock::now();
   if (require_problem_kind(request.kind, request.problem) == fem::ProblemKind::elasticity) {
     fem::ElasticityProblem problem;
     fem::stage("setup", [&] {
       out.space = choose_space(request.space, request.default_space, mesh);
-      problem = elasticity_problem(request.problem, domain, mesh);
+      problem = elasticity_problem(request.problem, domain, tags);
     });
     if (request.own_boundary) problem.to_true_boundary = nullptr;
     out.problem_seconds = seconds_since(setting_up);
@@ -51,7 +53,7 @@ SolveRun solve_problem(const SolveRequest& request, const Domain& domain, const 
   fem::PoissonProblem problem;
   fem::stage("setup", [&] {
     out.space = choose_space(request.space, request.default_space, mesh);
-    problem = poisson_problem(request.problem, domain, mesh, &out.warning);
+    problem = poisson_problem(request.problem, domain, tags, &out.warning);
   });
   if (request.own_boundary) problem.to_true_boundary = nullptr;
   if (!out.warning.empty() && request.warn) request.warn(out.warning);

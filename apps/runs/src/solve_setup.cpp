@@ -65,19 +65,20 @@ fem::ProblemKind problem_kind(const ProblemSpec& spec) {
 }
 
 fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domain,
-                                    const PolyMesh& mesh, std::string* warning) {
-  if (!spec.user()) return fem::make_poisson_problem(spec.name, domain, mesh.tag_names);
+                                    const std::vector<std::string>& tag_names,
+                                    std::string* warning) {
+  if (!spec.user()) return fem::make_poisson_problem(spec.name, domain, tag_names);
   fem::UserPoissonProblem p =
-      fem::user_poisson_problem(spec.exact, spec.source, spec.k, domain, mesh.tag_names);
+      fem::user_poisson_problem(spec.exact, spec.source, spec.k, domain, tag_names);
   if (warning) *warning = p.warning;
   return std::move(p.problem);
 }
 
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
-                                          const PolyMesh& mesh) {
+                                          const std::vector<std::string>& tag_names) {
   if (spec.user())
     throw InputError("--exact/--source: user expressions define Poisson problems only");
-  return fem::make_elasticity_problem(spec.name, domain, mesh.tag_names);
+  return fem::make_elasticity_problem(spec.name, domain, tag_names);
 }
 
 const std::map<std::string, SolverBackend>& solver_backends() {
@@ -87,13 +88,24 @@ const std::map<std::string, SolverBackend>& solver_backends() {
   return names;
 }
 
-fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
-                                 const SpaceChoice& space, const Progress& progress,
-                                 const Solver& solver) {
+namespace {
+
+fem::LinearSolverOptions solver_options(const Progress& progress, const Solver& solver) {
   fem::LinearSolverOptions options;
   options.progress = progress;
   options.backend = solver.backend;
   options.cell_rank = solver.cell_rank;
+  options.piece_points = solver.piece_points;
+  options.piece_owner = solver.piece_owner;
+  return options;
+}
+
+}  // namespace
+
+fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,
+                                 const SpaceChoice& space, const Progress& progress,
+                                 const Solver& solver) {
+  const fem::LinearSolverOptions options = solver_options(progress, solver);
   if (space.fe) return fem::solve_poisson(mesh, problem, *space.fe, options);
   return fem::solve_poisson_fv(mesh, problem, options);
 }
@@ -103,10 +115,7 @@ fem::VectorSolution solve_vector(const PolyMesh& mesh, const fem::ElasticityProb
                                  const Solver& solver) {
   if (!space.fe)
     throw InputError("--space fv: finite volumes solve Poisson problems only");
-  fem::LinearSolverOptions options;
-  options.progress = progress;
-  options.backend = solver.backend;
-  options.cell_rank = solver.cell_rank;
+  const fem::LinearSolverOptions options = solver_options(progress, solver);
   return fem::solve_elasticity(mesh, problem, *space.fe, options);
 }
 

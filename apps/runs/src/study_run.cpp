@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "volmesh/runs/distributed.hpp"
+#include "volmesh/runs/mesh_pieces.hpp"
 #include "volmesh/runs/mesh_run.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/open_domain.hpp"
@@ -52,18 +53,20 @@ std::string series_name(const std::string& method, const meshers::MethodOptions&
 }
 
 // The problem's set-up is the stage "setup" (fem::stage), the solve's own stages follow.
+// `tag_names`: the mesh's boundary tags (over all ranks for a mesh in pieces).
 fem::LevelSolve solve_level(const StudySpec& spec, fem::ProblemKind kind, const Domain& domain,
-                            const PolyMesh& mesh, const SpaceChoice& space,
-                            const Progress& progress, const Solver& solver) {
+                            const PolyMesh& mesh, const std::vector<std::string>& tag_names,
+                            const SpaceChoice& space, const Progress& progress,
+                            const Solver& solver) {
   fem::LevelSolve out;
   if (kind == fem::ProblemKind::elasticity) {
     fem::ElasticityProblem problem;
-    fem::stage("setup", [&] { problem = elasticity_problem(spec.problem, domain, mesh); });
+    fem::stage("setup", [&] { problem = elasticity_problem(spec.problem, domain, tag_names); });
     const fem::VectorSolution s = solve_vector(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   } else {
     fem::PoissonProblem problem;
-    fem::stage("setup", [&] { problem = poisson_problem(spec.problem, domain, mesh); });
+    fem::stage("setup", [&] { problem = poisson_problem(spec.problem, domain, tag_names); });
     const fem::ScalarSolution s = solve_scalar(mesh, problem, space, progress, solver);
     out.dofs = s.dofs, out.solve = s.solve, out.errors = s.errors;
   }
@@ -115,9 +118,20 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
     const std::string name = series_name(method.name, spec.options);
     // The space follows from the first level's mesh; every level has the same cell kinds.
     std::optional<SpaceChoice> space;
+    // Under mpirun with --partition octree, each level is meshed in pieces: this rank's.
+    const bool in_pieces = partition_in_pieces(spec.partition, method.name, spec.options, "");
+    RankPiece piece;
     const fem::MeshAtLevel mesh = [&](int level, const Progress& meshing) {
       const meshers::MeshRequest request =
           uniform_request(outcome.domain, level, spec.options, meshing);
+      if (in_pieces) {
+        RankMesh r = mesh_on_every_rank(method, *domain, request);
+        piece = std::move(r.piece);
+        fem::stage("setup", [&] {
+          if (!space) space = choose_space(spec.space, method.default_space, piece.mesh);
+        });
+        return fem::StudyMesh{std::move(piece.mesh), r.h, piece.global_cell_count};
+      }
       std::vector<double> h{0.0};
       PolyMesh m = mesh_on_rank_zero(
           [&] {
@@ -132,10 +146,13 @@ StudyOutcome run_study(const StudySpec& spec, const Progress& progress) {
       return fem::StudyMesh{std::move(m), h[0]};
     };
     const fem::SolveOnMesh solve = [&](const PolyMesh& m, const Progress& solving) {
+      if (in_pieces)
+        return solve_level(spec, kind, *domain, m, boundary_tags_over_ranks(m), *space, solving,
+                           {spec.solver, nullptr, &piece.global_points, &piece.point_owner});
       // A distributed run partitions every level into one part per rank.
       const std::vector<Index> cell_rank =
           fem::distributed_run() ? partition_for_ranks(m) : std::vector<Index>{};
-      return solve_level(spec, kind, *domain, m, *space, solving,
+      return solve_level(spec, kind, *domain, m, m.tag_names, *space, solving,
                          {spec.solver, fem::distributed_run() ? &cell_rank : nullptr});
     };
     const double share = 1.0 / static_cast<double>(methods.size());

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "octree_request.hpp"
+#include "volmesh/meshers/octree_request.hpp"
 #include "registration.hpp"
 
 namespace volmesh::meshers {

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "registration.hpp"
+#include "volmesh/meshers/grid.hpp"
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/structured.hpp"
@@ -28,7 +29,9 @@ void require_box(const Domain& domain, const Box3& box, const std::string& name)
   }
 }
 
-MeshResult mesh_grid(const Domain& domain, const MeshRequest& request) {
+}  // namespace
+
+Box3 grid_box(const Domain& domain, const MeshRequest& request) {
   const int level = *request.level;
   if (level > kMaxGridLevel)
     throw InputError("grid: --level " + std::to_string(level) + " gives " +
@@ -40,6 +43,14 @@ MeshResult mesh_grid(const Domain& domain, const MeshRequest& request) {
   if (!box.lo.allFinite() || !box.hi.allFinite() || !((box.hi - box.lo).minCoeff() > 0.0))
     throw InputError(request.domain_name + ": empty or flat bounding box; no grid to build");
   require_box(domain, box, request.domain_name);
+  return box;
+}
+
+namespace {
+
+MeshResult mesh_grid(const Domain& domain, const MeshRequest& request) {
+  const int level = *request.level;
+  const Box3 box = grid_box(domain, request);
   const bool tets = given<bool>(request.options, "tets").value_or(false);
   const Index n = Index{1} << level;
   const std::array<Index, 3> cells{n, n, n};

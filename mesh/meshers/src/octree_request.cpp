@@ -1,4 +1,4 @@
-#include "octree_request.hpp"
+#include "volmesh/meshers/octree_request.hpp"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "octree_request.hpp"
+#include "volmesh/meshers/octree_request.hpp"
 #include "registration.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/octree/octree.hpp"

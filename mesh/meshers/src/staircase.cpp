@@ -1,7 +1,7 @@
 // The staircase octree method (volmesh/octree/staircase.hpp).
 #include "volmesh/octree/staircase.hpp"
 
-#include "octree_request.hpp"
+#include "volmesh/meshers/octree_request.hpp"
 #include "registration.hpp"
 
 namespace volmesh::meshers {

@@ -1,6 +1,7 @@
 // Whether the build has p4est; without it, the refusals.
 #include "volmesh/core/errors.hpp"
 #include "volmesh/octree_dist/distributed_octree.hpp"
+#include "volmesh/octree_dist/grid_piece.hpp"
 #include "volmesh/octree_dist/staircase_piece.hpp"
 
 #ifdef VOLMESH_HAVE_P4EST
@@ -27,8 +28,12 @@ DistributedOctree build_distributed_octree(const Domain&, const OctreeOptions&) 
   throw InputError("this volmesh was built without p4est: no distributed octree");
 }
 
-StaircasePiece staircase_piece(const DistributedOctree&, const Domain&) {
+RankPiece staircase_piece(const DistributedOctree&, const Domain&) {
   throw InputError("this volmesh was built without p4est: no distributed octree");
+}
+
+RankPiece grid_piece(const Box3&, int) {
+  throw InputError("this volmesh was built without p4est: no distributed grid");
 }
 
 #endif

@@ -5,6 +5,7 @@
 // (Eigen's IncompleteCholesky with AMD ordering and its automatic diagonal shift). AMG keeps
 // the iteration count about flat under refinement; incomplete Cholesky doubles it with each
 // halving of h.
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -41,6 +42,13 @@ struct LinearSolverOptions {
   // finite-element solves are then collective (PETSc over all ranks, see fe_distributed.hpp),
   // whatever the number of unknowns. Null: this process solves alone.
   const std::vector<Index>* cell_rank = nullptr;
+  // A run over the ranks in which each rank holds only its piece of the mesh (the pieces of
+  // volmesh/octree_dist/rank_piece.hpp): each point's number over all ranks and the rank
+  // owning it, the lowest whose cells use it. The solves are then collective, each rank
+  // assembling its own cells (fe_pieces.hpp); faces tagged "procBoundary..." lie between
+  // pieces. Null: not such a run.
+  const std::vector<std::int64_t>* piece_points = nullptr;
+  const std::vector<int>* piece_owner = nullptr;
 };
 
 // How the unknowns sit on the nodes: `components` per node, node-major, and the nodes'

@@ -58,6 +58,9 @@ void sum_over_ranks(double* values, std::size_t count);  // in place
 double max_over_ranks(double value);
 // Every rank's `mine`, concatenated in rank order, on every rank.
 std::vector<double> gather_to_all(const double* mine, std::size_t count);
+// Values from every rank to every rank: to[r] goes to rank r; returns from[r], what rank r
+// sent this one (one all-to-all of the counts, one of the values).
+std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& to);
 // Rank 0's bytes on every rank.
 void broadcast(std::vector<char>& bytes);
 // Every rank's bytes on every rank, in rank order.

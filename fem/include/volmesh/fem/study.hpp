@@ -6,6 +6,7 @@
 // The driver takes the mesher and the solver as functions, so that it serves every method
 // (octree, cut cells, grids) and every space without depending on them.
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -57,6 +58,9 @@ SeriesRates convergence_rates(const ConvergenceSeries& series);
 struct StudyMesh {
   PolyMesh mesh;
   double h = 0.0;
+  // The cells over all ranks when `mesh` is this rank's piece of the level's mesh; -1: the
+  // mesh's own.
+  std::int64_t cells = -1;
 };
 struct LevelSolve {
   Index dofs = 0;

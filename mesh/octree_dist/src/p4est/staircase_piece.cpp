@@ -71,7 +71,7 @@ std::uint64_t grid_key(const Octree& tree, const Vec3& x) {
 
 }  // namespace
 
-StaircasePiece staircase_piece(const DistributedOctree& distributed, const Domain& domain) {
+RankPiece staircase_piece(const DistributedOctree& distributed, const Domain& domain) {
   LocalTree local = local_tree(distributed);
   const Octree tree(distributed.root.origin, distributed.root.side, std::move(local.leaves));
   std::vector<Index> cell_leaf;
@@ -87,7 +87,7 @@ StaircasePiece staircase_piece(const DistributedOctree& distributed, const Domai
   }
   PartMesh mine = std::move(split_mesh(whole, cell_part, distributed.ranks + 1)[distributed.rank]);
 
-  StaircasePiece out;
+  RankPiece out;
   out.mesh = std::move(mine.mesh);
   const std::int64_t cells = out.mesh.num_cells();
   std::int64_t first_cell = 0;
@@ -107,6 +107,7 @@ StaircasePiece staircase_piece(const DistributedOctree& distributed, const Domai
   octree_dist::PointNumbers numbers = number_points(keys, owner, MPI_COMM_WORLD);
   out.global_points = std::move(numbers.id);
   out.global_point_count = numbers.count;
+  out.point_owner = std::move(owner);
   return out;
 }
 

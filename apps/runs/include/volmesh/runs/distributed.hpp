@@ -15,6 +15,8 @@
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/fem/parallel.hpp"
 #include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/partitioned_io.hpp"
+#include "volmesh/octree_dist/rank_piece.hpp"
 
 namespace volmesh::cli {
 
@@ -32,6 +34,9 @@ PolyMesh mesh_on_rank_zero(const std::function<PolyMesh()>& make,
 // global ids, or does not fit the others.
 PolyMesh read_pieces_on_ranks(const std::filesystem::path& pvtu, std::vector<Index>& cell_rank);
 
+// Throws InputError when a mesh of `cells` cells leaves a rank without one.
+void require_cell_per_rank(std::int64_t cells);
+
 // Each cell's rank: rank 0 partitions with METIS (one part per rank) and shares the array.
 // Throws InputError on every rank when there are more ranks than cells.
 std::vector<Index> partition_for_ranks(const PolyMesh& mesh);
@@ -42,6 +47,16 @@ std::vector<Index> partition_for_ranks(const PolyMesh& mesh);
 // Any rank's failure makes every rank throw.
 void write_solution(const PolyMesh& mesh, const MeshFields& fields,
                     const std::vector<Index>& cell_rank, const std::filesystem::path& path);
+
+// Writes a solution solved on the ranks' pieces (--partition octree): each rank its piece
+// with `fields` and the "global_cell" and "global_point" numbers, as write_solution does.
+void write_piece_solution(const PolyMesh& piece, MeshFields fields, const RankPiece& numbers,
+                          const std::filesystem::path& path);
+
+// Writes a .pvtu set of `pieces` pieces (fem::ranks(), or 1 on one rank), each rank its own
+// piece, rank 0 the summary once every piece exists (the stage "write"); every piece carries
+// the same arrays.
+void write_pieces(MeshPiece mine, const std::filesystem::path& path, int pieces);
 
 // The command line as volmesh's parser sees it (PETSc's options taken off), kept by main for
 // a re-launch.

@@ -32,6 +32,11 @@ ValidityReport require_valid_output(const PolyMesh& mesh, const std::string& met
 // Cells and volume per region, as `mesh --json` reports them.
 nlohmann::json region_summary(const PolyMesh& mesh, const ValidityReport& validity);
 
+// The request's part of `volmesh mesh --json`'s object: the method, domain, level or size,
+// octree options and the mesher's time.
+nlohmann::json request_summary(const std::string& method, const meshers::MeshRequest& request,
+                               double seconds);
+
 // `volmesh mesh --json`'s object but its output file, total time and decomposition: the
 // method, domain, level or size, octree options, time_seconds, regions, validity and the
 // mesher's own figures.

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "volmesh/runs/solve_setup.hpp"
 
@@ -23,6 +24,9 @@ struct SolveRequest {
   // projection along normals could leave a point at a sharp edge for another surface).
   bool own_boundary = false;
   Solver solver;
+  // The boundary tags the problem's conditions are matched against: empty for the mesh's own;
+  // over all ranks for a mesh in pieces (boundary_tags_over_ranks), where a piece may lack one.
+  std::vector<std::string> tag_names;
   // Receives the user problem's source check, if any, before the solve starts.
   std::function<void(const std::string&)> warn;
 };

@@ -38,22 +38,28 @@ struct ProblemSpec {
 // Refuses a spec with both a name and expressions, or neither (InputError).
 fem::ProblemKind problem_kind(const ProblemSpec& spec);
 
-// The problem on a mesh of `domain` (its boundary tags get conditions). `warning` receives
-// the user problem's source check, if any.
+// The problem on a mesh of `domain` whose boundary tags (which get conditions) are
+// `tag_names`: the mesh's, or over all ranks for a mesh in pieces (boundary_tags_over_ranks).
+// `warning` receives the user problem's source check, if any.
 fem::PoissonProblem poisson_problem(const ProblemSpec& spec, const Domain& domain,
-                                    const PolyMesh& mesh, std::string* warning = nullptr);
+                                    const std::vector<std::string>& tag_names,
+                                    std::string* warning = nullptr);
 fem::ElasticityProblem elasticity_problem(const ProblemSpec& spec, const Domain& domain,
-                                          const PolyMesh& mesh);
+                                          const std::vector<std::string>& tag_names);
 
 // Who runs CG on the large systems (LinearSolverOptions::Backend).
 using SolverBackend = fem::LinearSolverOptions::Backend;
 // By name: auto, eigen, petsc (--solver).
 const std::map<std::string, SolverBackend>& solver_backends();
 
-// The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank).
+// The backend, and in a distributed run each cell's rank (LinearSolverOptions::cell_rank),
+// or, when each rank holds its piece of the mesh, the piece's point numbers and owners
+// (LinearSolverOptions::piece_points).
 struct Solver {
   SolverBackend backend = SolverBackend::automatic;
   const std::vector<Index>* cell_rank = nullptr;
+  const std::vector<std::int64_t>* piece_points = nullptr;
+  const std::vector<int>* piece_owner = nullptr;
 };
 
 fem::ScalarSolution solve_scalar(const PolyMesh& mesh, const fem::PoissonProblem& problem,

@@ -23,6 +23,7 @@ struct StudySpec {
   meshers::MethodOptions options;    // given to every method
   int first_level = 0, last_level = 0;
   SolverBackend solver = SolverBackend::automatic;
+  std::string partition;  // --partition under mpirun (mesh_pieces.hpp); empty: the default
 };
 
 struct StudyOutcome {

@@ -1,0 +1,179 @@
+// Meshing and solving in pieces under mpirun with 1, 2 and 4 ranks (tests/apps/run_mpi.hpp):
+// no rank holds the whole mesh, yet the pieces read back by the PVTU reader make up the
+// serial mesh (cells, volume, region volumes), the solution is the serial one to the solver
+// tolerance, a fixed rank count gives the same bytes, and a failure on one rank in any stage
+// ends every rank. Skipped in a build without PETSc or p4est.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "pvtu_compare.hpp"
+#include "run_mpi.hpp"
+#include "volmesh/core/validity.hpp"
+#include "volmesh/io/mesh_io.hpp"
+#include "volmesh/io/partitioned_io.hpp"
+
+namespace volmesh {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_mpi;
+using test::run_volmesh;
+
+using CliPieces = test::MpiTest;
+
+const std::vector<int> kRankCounts{1, 2, 4};
+// Volumes summed in another order agree to rounding.
+constexpr double kVolumeAgreement = 1e-10;
+// Error norms below this are rounding (a patch test's): compared point by point only.
+constexpr double kRoundingErrors = 1e-8;
+
+bool pieces_built(const fs::path& dir) {
+  const std::string version = run_volmesh("--version", dir).out;
+  return test::petsc_built(dir) && version.find("p4est 2") != std::string::npos;
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+
+void expect_same_mesh(const PolyMesh& serial, const fs::path& pvtu, int ranks) {
+  EXPECT_EQ(pvtu_piece_files(pvtu).size(), std::size_t(ranks));
+  const PolyMesh whole = read_mesh(pvtu);  // the pieces stitched by their global ids
+  const ValidityReport a = check_validity(serial), b = check_validity(whole);
+  EXPECT_TRUE(b.valid()) << (b.problems.empty() ? "" : b.problems.front());
+  EXPECT_EQ(whole.num_cells(), serial.num_cells());
+  EXPECT_EQ(whole.num_points(), serial.num_points());
+  EXPECT_EQ(whole.num_faces(), serial.num_faces());
+  EXPECT_LE(relative(b.total_volume, a.total_volume), kVolumeAgreement);
+  ASSERT_EQ(b.region_volume.size(), a.region_volume.size());
+  for (const auto& [region, volume] : a.region_volume)
+    EXPECT_LE(relative(b.region_volume.at(region), volume), kVolumeAgreement) << region;
+}
+
+TEST_F(CliPieces, MeshPiecesMakeTheSerialMesh) {
+  const fs::path dir = test::scratch_dir("pieces-mesh");
+  if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
+  for (const std::string mesh : {"staircase builtin:primitives --level 5 --base-level 3",
+                                 "staircase builtin:ball --level 5 --cells-between-levels 2",
+                                 "grid builtin:box --level 4"}) {
+    SCOPED_TRACE(mesh);
+    const fs::path serial = dir / "serial.vtu";
+    ASSERT_EQ(run_volmesh("mesh " + mesh + " -o " + serial.string(), dir).exit_code, 0);
+    const PolyMesh reference = read_mesh(serial);
+    for (const int ranks : kRankCounts) {
+      SCOPED_TRACE(ranks);
+      const fs::path out = dir / ("p" + std::to_string(ranks) + ".pvtu");
+      const auto r = run_mpi(ranks, "mesh " + mesh + " -o " + out.string() + " --json", dir);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const auto j = nlohmann::json::parse(r.out);  // rank 0 alone prints
+      EXPECT_EQ(j["ranks"], ranks);
+      EXPECT_EQ(j["cells"], reference.num_cells());
+      expect_same_mesh(reference, out, ranks);
+    }
+  }
+}
+
+TEST_F(CliPieces, AFixedRankCountGivesTheSameBytes) {
+  const fs::path dir = test::scratch_dir("pieces-bytes");
+  if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
+  const std::vector<std::string> runs{
+      "mesh staircase builtin:ball --level 5 -o ",
+      "solve poisson --problem sine --method staircase --domain builtin:ball --level 4 -o "};
+  constexpr int kRanks = 2;
+  for (const std::string& run : runs) {
+    SCOPED_TRACE(run);
+    for (const std::string name : {"a", "b"})
+      ASSERT_EQ(run_mpi(kRanks, run + (dir / (name + ".pvtu")).string(), dir).exit_code, 0);
+    for (int piece = 0; piece < kRanks; ++piece) {
+      const std::string a = test::slurp(dir / "a" / ("a_" + std::to_string(piece) + ".vtu"));
+      EXPECT_FALSE(a.empty());
+      EXPECT_TRUE(a == test::slurp(dir / "b" / ("b_" + std::to_string(piece) + ".vtu"))) << piece;
+    }
+  }
+}
+
+// The serial solve's figures (PETSc's CG, as under mpirun) against every rank count's, and
+// the grid's solutions value by value.
+TEST_F(CliPieces, SolvesOnThePiecesMatchSerial) {
+  const fs::path dir = test::scratch_dir("pieces-solve");
+  if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
+  for (const std::string c :
+       {"poisson --problem sine --method staircase --domain builtin:ball --level 4",
+        "poisson --problem sine --method staircase --domain builtin:primitives --level 4",
+        "poisson --problem sine --method grid --level 4",  // Q1
+        "elasticity --problem elastic-patch --method grid --level 3",
+        "elasticity --problem lame --method staircase --domain builtin:thick-sphere --level 3"}) {
+    SCOPED_TRACE(c);
+    const fs::path serial = dir / "serial.vtu";
+    const auto s = run_volmesh("solve " + c + " --solver petsc --json -o " + serial.string(), dir);
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+    const auto expected = nlohmann::json::parse(s.out);
+    for (const int ranks : kRankCounts) {
+      SCOPED_TRACE(ranks);
+      const fs::path out = dir / ("u" + std::to_string(ranks) + ".pvtu");
+      const auto r = run_mpi(ranks, "solve " + c + " --json -o " + out.string(), dir);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["partition"], "octree");
+      for (const char* count : {"cells", "points", "dofs", "unknowns"})
+        EXPECT_EQ(j[count], expected[count]) << count;
+      for (const char* norm : {"l2", "h1", "linf"}) {
+        const double e = expected["errors"][norm].get<double>();
+        if (e > kRoundingErrors)
+          EXPECT_LE(relative(j["errors"][norm].get<double>(), e), test::kSolutionAgreement) << norm;
+      }
+      EXPECT_EQ(pvtu_piece_files(out).size(), std::size_t(ranks));
+      // The grid's pieces keep the serial numbers: point by point through VTK's readers.
+      if (c.find("grid") != std::string::npos)
+        test::expect_same_solution(test::compare_files(serial, out));
+    }
+  }
+}
+
+TEST_F(CliPieces, AFailureOnOneRankInAnyStageEndsEveryRank) {
+  const fs::path dir = test::scratch_dir("pieces-fail");
+  if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
+  constexpr int kRanks = 2;
+  const fs::path out = dir / "u.pvtu";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> runs{
+      {"mesh staircase builtin:ball --level 4 -o ", {"mesh@1", "check@1", "write@1", "mesh@0"}},
+      {"solve poisson --problem sine --method staircase --level 3 -o ",
+       {"mesh@1", "setup@1", "assembly@1", "preconditioner@1", "solve@1", "errors@1", "write@1",
+        "assembly@0"}}};
+  for (const auto& [run, failures] : runs)
+    for (const std::string& failure : failures) {
+      SCOPED_TRACE(run + failure);
+      const std::string stage = failure.substr(0, failure.find('@'));
+      const std::string rank = failure.substr(failure.find('@') + 1);
+      test::expect_all_failed(test::run_mpi_ranks(kRanks, run + out.string(), dir,
+                                                  "VOLMESH_TEST_FAIL_STAGE=" + failure),
+                              kRanks, "stage " + stage + " failed on rank " + rank, out);
+    }
+}
+
+// What has no pieces takes the rank-0 path, saying so on one line.
+TEST_F(CliPieces, CutCellsAndVtuOutputsTakeTheRankZeroPath) {
+  const fs::path dir = test::scratch_dir("pieces-rank-zero");
+  if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
+  const fs::path out = dir / "c.pvtu";
+  const auto c = run_mpi(2, "solve poisson --problem sine --method cutcell --level 3 --json -o " +
+                                out.string(), dir);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(c.err.find("note: cutcell does not mesh in pieces: rank 0 meshes, METIS partitions"),
+            std::string::npos)
+      << c.err;
+  EXPECT_EQ(nlohmann::json::parse(c.out)["partition"], "metis");
+  const fs::path vtu = dir / "s.vtu";
+  const auto s = run_mpi(2, "mesh staircase builtin:ball --level 3 -o " + vtu.string(), dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  EXPECT_NE(s.err.find("rank 0 meshes alone"), std::string::npos) << s.err;
+  const fs::path serial = dir / "serial.vtu";
+  ASSERT_EQ(run_volmesh("mesh staircase builtin:ball --level 3 -o " + serial.string(), dir).exit_code,
+            0);
+  EXPECT_EQ(read_mesh(vtu).num_cells(), read_mesh(serial).num_cells());
+}
+
+}  // namespace
+}  // namespace volmesh
