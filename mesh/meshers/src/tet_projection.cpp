@@ -47,6 +47,7 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
                                {"value", s.enclosed_volume.get_d()}}},
           {"rounding", {{"moved_points", rounding.moved_points},
                         {"repaired_prisms", rounding.repaired_prisms},
+                        {"repaired_tets", rounding.repaired_tets},
                         {"directions_tried", rounding.directions_tried}}},
           {"stage_seconds", stages}};
 }
@@ -90,6 +91,7 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
       if (attempt + 1 == attempts.size()) throw;
     }
   }
+  tet::drop_unused_points(tets);
   drop_cavities(tets, surfaces);
   MeshResult r;
   r.mesh = to_poly_mesh(tets);
