@@ -39,11 +39,11 @@ bool positive(const std::vector<Vec3>& p, const std::array<Index, 4>& t) {
   return CGAL::orientation(at(t[0]), at(t[1]), at(t[2]), at(t[3])) == CGAL::POSITIVE;
 }
 
-// Where each surface Steiner point may go in the repair: inside the one input triangle its
-// boundary faces lie in, or along the edge of the two; the input points stay.
-std::vector<improve::Slide> carriers(const ProjectionMesh& exact,
-                                     const std::vector<ProjectionSurface>& surfaces,
-                                     const TetMesh& mesh) {
+}  // namespace
+
+std::vector<improve::Slide> surface_slides(const ProjectionMesh& exact,
+                                           const std::vector<ProjectionSurface>& surfaces,
+                                           const TetMesh& mesh) {
   std::vector<std::vector<std::array<Index, 3>>> around(mesh.points.size());
   for (std::size_t f = 0; f < exact.boundary_faces.size(); ++f)
     for (const Index v : exact.boundary_faces[f]) {
@@ -71,9 +71,7 @@ std::vector<improve::Slide> carriers(const ProjectionMesh& exact,
   return slides;
 }
 
-}  // namespace
-
-void drop_unused_points(TetMesh& mesh) {
+std::vector<Index> drop_unused_points(TetMesh& mesh) {
   std::vector<Index> renumber(mesh.points.size(), kNoIndex);
   for (const auto& c : mesh.cells)
     for (const Index v : c) renumber[v] = 0;
@@ -88,6 +86,7 @@ void drop_unused_points(TetMesh& mesh) {
     for (Index& v : c) v = renumber[v];
   for (auto& f : mesh.boundary_faces)
     for (Index& v : f) v = renumber[v];
+  return renumber;
 }
 
 TetMesh round_to_doubles(const ProjectionMesh& exact,
@@ -139,7 +138,7 @@ TetMesh round_to_doubles(const ProjectionMesh& exact,
   // The tets still flat or inverted, repaired in doubles by local changes; the surface points
   // stay (they come before the prism centres, so they keep their numbers).
   const improve::RepairStats repair =
-      improve::repair_flat_tets(mesh, carriers(exact, surfaces, mesh));
+      improve::repair_flat_tets(mesh, surface_slides(exact, surfaces, mesh));
   rounding.repaired_tets = repair.bad_before;
   if (repair.bad_after > 0) {
     Index t = 0;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/improve/slides.hpp"
 #include "volmesh/tet/projection.hpp"
 
 namespace volmesh::tet {
@@ -32,7 +33,15 @@ struct Rounding {
 TetMesh round_to_doubles(const ProjectionMesh& mesh,
                          const std::vector<ProjectionSurface>& surfaces, Rounding& rounding);
 
-// The mesh without the points no tet uses, the others renumbered in order.
-void drop_unused_points(TetMesh& mesh);
+// The mesh without the points no tet uses, the others renumbered in order; returns each old
+// point's new number (kNoIndex: dropped).
+std::vector<Index> drop_unused_points(TetMesh& mesh);
+
+// Per point of `rounded` (round_to_doubles' numbering), where a surface Steiner point may
+// slide: inside the one input triangle its boundary faces lie in, or along the input edge
+// of the two; none for the input points and the prism centres.
+std::vector<improve::Slide> surface_slides(const ProjectionMesh& exact,
+                                           const std::vector<ProjectionSurface>& surfaces,
+                                           const TetMesh& rounded);
 
 }  // namespace volmesh::tet
