@@ -46,6 +46,28 @@ TEST(CliTetProjection, MeshesACubeExactlyAndReportsItsFigures) {
   EXPECT_DOUBLE_EQ(v.total_volume, 0.125);
 }
 
+// --improve: the mesh coarsened and improved is valid, fills the same volume and has no
+// more tets than the plain one, its worst dihedral angle no smaller.
+TEST(CliTetProjection, ImproveCoarsensAndKeepsTheVolume) {
+  const fs::path dir = test::scratch_dir("tet-projection-improve");
+  const fs::path plain = dir / "plain.vtu", improved = dir / "improved.vtu";
+  const auto p = run_volmesh("mesh tet-projection builtin:schoenhardt --json -o " + plain.string(), dir);
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  const auto r = run_volmesh(
+      "mesh tet-projection builtin:schoenhardt --improve --json -o " + improved.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& c = j["improvement"]["coarsen"];
+  EXPECT_LE(c["tets"][1].get<Index>(), c["tets"][0].get<Index>());
+  const auto& dihedral = j["improvement"]["improve"]["min_dihedral_deg"];
+  EXPECT_GE(dihedral[1].get<double>(), dihedral[0].get<double>());
+  const ValidityReport before = check_validity(read_mesh(plain));
+  const ValidityReport after = check_validity(read_mesh(improved));
+  EXPECT_TRUE(after.valid());
+  EXPECT_LE(read_mesh(improved).num_cells(), read_mesh(plain).num_cells());
+  EXPECT_NEAR(after.total_volume, before.total_volume, 1e-12 * before.total_volume);
+}
+
 // nested.json: the unit cube around inner_cube.off, labels 1 and 2; the inner surface is an
 // interface, so the mesh's boundary is the outer cube's alone.
 TEST(CliTetProjection, NestedSurfacesGiveTheirRegions) {

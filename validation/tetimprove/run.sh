@@ -4,7 +4,9 @@
 # a time. Reports per model TetGen's and the improved mesh's tets, min and max dihedral
 # angle, tets under 10°, largest radius-edge ratio, the tet count ratio, both wall times and
 # their ratio, and the improved mesh's `volmesh check` verdict, beside the targets:
-# min dihedral >= 15°, max <= 165°, at most 1.2x the tets, at most 10x TetGen's time.
+# min dihedral >= 15°, max <= 165°, at most 1.2x the tets, at most 10x TetGen's time. In the
+# same run, `volmesh mesh tet-projection --improve` on the surface, against its targets: at most
+# 3x TetGen's tets and min dihedral >= 10°.
 # Writes build/validation-tetimprove/report.md and prints it. Knobs:
 #   VALIDATION_BUILD=DIR          the Release build to use (default build/release)
 #   TETIMPROVE_RESULTS=DIR        where the results go (default build/validation-tetimprove)
@@ -39,12 +41,21 @@ for model in $MODELS; do
   echo "$status" > "$RESULTS/$model.improve.exit"
   "$VOLMESH" check "$RESULTS/$model.improved.vtu" --json -q > "$RESULTS/$model.check.json" \
     2> "$RESULTS/$model.check.err" || true
+  status=0
+  /usr/bin/time -f "%e" -o "$RESULTS/$model.projection.time" \
+    "$VOLMESH" mesh tet-projection "$RESULTS/$model.off" --improve \
+    -o "$RESULTS/$model.projection.vtu" --json -q "${threads[@]}" \
+    > "$RESULTS/$model.projection.json" 2> "$RESULTS/$model.projection.err" || status=$?
+  echo "$status" > "$RESULTS/$model.projection.exit"
+  "$VOLMESH" check "$RESULTS/$model.projection.vtu" --json -q \
+    > "$RESULTS/$model.projection.check.json" 2> "$RESULTS/$model.projection.check.err" || true
 done
 
 /usr/bin/python3 - "$RESULTS" $MODELS > "$RESULTS/report.md" <<'EOF'
 import json, sys
 results, models = sys.argv[1], sys.argv[2:]
 MIN_DIHEDRAL, MAX_DIHEDRAL, TET_RATIO, TIME_RATIO = 15.0, 165.0, 1.2, 10.0
+PROJECTION_RATIO, PROJECTION_MIN = 3.0, 10.0
 def seconds(name):
     return float(open(f"{results}/{name}").read().split()[0])
 print("# Tet improvement of TetGen -pq1.414 meshes, boundary kept\n")
@@ -76,5 +87,22 @@ for m in models:
 print()
 for v in verdicts:
     print(f"- {v}")
+print("\n## tet-projection --improve\n")
+print(f"Targets: tets <= {PROJECTION_RATIO}x TetGen's, min dihedral >= {PROJECTION_MIN}°.\n")
+print("| model | tets | x TetGen | min dihedral | max dihedral | seconds | valid | verdict |")
+print("|---|---|---|---|---|---|---|---|")
+for m in models:
+    if int(open(f"{results}/{m}.projection.exit").read()) != 0:
+        print(f"| {m} | failed: {open(f'{results}/{m}.projection.err').read().strip()} |||||||")
+        continue
+    j = json.load(open(f"{results}/{m}.projection.json"))
+    check = json.load(open(f"{results}/{m}.projection.check.json"))
+    tetgen = json.load(open(f"{results}/{m}.improve.json"))["before"]["tets"]
+    i = j["improvement"]["improve"]
+    ratio = i["tets"] / tetgen
+    met = ratio <= PROJECTION_RATIO and i["min_dihedral_deg"][1] >= PROJECTION_MIN
+    print(f"| {m} | {i['tets']} | {ratio:.2f} | {i['min_dihedral_deg'][1]:.2f}° | "
+          f"{i['max_dihedral_deg'][1]:.2f}° | {seconds(f'{m}.projection.time'):.2f} | "
+          f"{check['validity']['valid']} | {'targets met' if met else 'TARGETS MISSED'} |")
 EOF
 cat "$RESULTS/report.md"

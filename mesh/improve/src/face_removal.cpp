@@ -98,7 +98,8 @@ int remove_faces(TetComplex& mesh, Index t, int face) {
   Index b = kNoIndex;
   for (const Index v : mesh.tet(other))
     if (!holds(s, v)) b = v;
-  if (!mesh.tets_with(a, b).empty()) return 0;
+  // b missing: the tet across has the same corners (a flat mesh can hold such a pair).
+  if (b == kNoIndex || !mesh.tets_with(a, b).empty()) return 0;
 
   std::vector<DiskFace> disk{{{x, y, z}, t, other}};
   std::optional<Candidate> best = fan(mesh, a, b, disk);

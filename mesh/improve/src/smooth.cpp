@@ -113,6 +113,7 @@ bool ascend(const TetComplex& mesh, Index v, const Star& star, Vec3& p, double& 
     const double q = quality_at(mesh, star, i, p);
     if (q <= worst + kActiveBand) active.push_back(constrained(mesh, v, gradient(mesh, star, i, p, q, h)));
   }
+  if (active.empty()) return false;  // no quality to raise: NaN where points coincide
   const Vec3 d = shortest_in_hull(active);
   const double length = d.norm();
   if (!(length > 0.0)) return false;  // the worst tets pull against each other: optimal

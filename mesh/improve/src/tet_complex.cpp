@@ -73,7 +73,9 @@ TetComplex::TetComplex(const TetMesh& mesh, const std::vector<Slide>& slides)
       star_(mesh.points.size()),
       freedom_(mesh.points.size(), Freedom::Free),
       slides_(mesh.points.size()),
-      stamp_(mesh.points.size(), 0) {
+      stamp_(mesh.points.size(), 0),
+      boundary_(mesh.boundary_faces),
+      boundary_tag_(mesh.boundary_tag) {
   const std::vector<std::array<Index, 3>> interfaces = interface_faces(mesh);
   std::vector<std::array<Index, 3>> fixed = interfaces;
   for (const auto& f : mesh.boundary_faces) fixed.push_back(sorted(f[0], f[1], f[2]));
@@ -91,6 +93,8 @@ TetComplex::TetComplex(const TetMesh& mesh, const std::vector<Slide>& slides)
       }
   for (const auto& f : interfaces)
     for (const Index v : f) freedom_[v] = Freedom::Pinned;
+  for (Index f = 0; f < static_cast<Index>(boundary_.size()); ++f)
+    boundary_slot_.emplace(sorted(boundary_[f][0], boundary_[f][1], boundary_[f][2]), f);
   for (Index t = 0; t < num_slots(); ++t) attach(t);
 }
 
@@ -137,6 +141,34 @@ bool TetComplex::all_positive(std::span<const Tet> tets) const {
   return std::all_of(tets.begin(), tets.end(), [&](const Tet& t) {
     return positive(points_[t[0]], points_[t[1]], points_[t[2]], points_[t[3]]);
   });
+}
+
+void TetComplex::rename_fixed(Index gone, Index kept) {
+  std::vector<std::array<Index, 3>> faces;
+  for (const Index t : star_[gone])
+    for (const auto& f : kTetFaces) {
+      const Tet& c = tets_[t];
+      const auto key = sorted(c[f[0]], c[f[1]], c[f[2]]);
+      if (std::count(key.begin(), key.end(), gone) > 0 && fixed_.count(key)) faces.push_back(key);
+    }
+  for (const auto& key : faces) {
+    if (fixed_.erase(key) == 0) continue;  // seen from its other tet already
+    std::array<Index, 3> renamed = key;
+    std::replace(renamed.begin(), renamed.end(), gone, kept);
+    const bool degenerate = std::count(key.begin(), key.end(), kept) > 0;
+    const auto renamed_key = sorted(renamed[0], renamed[1], renamed[2]);
+    if (!degenerate) fixed_.insert(renamed_key);
+    const auto slot = boundary_slot_.find(key);
+    if (slot == boundary_slot_.end()) continue;
+    const Index f = slot->second;
+    boundary_slot_.erase(slot);
+    if (degenerate) {
+      boundary_[f] = {kNoIndex, kNoIndex, kNoIndex};
+    } else {
+      std::replace(boundary_[f].begin(), boundary_[f].end(), gone, kept);
+      boundary_slot_.emplace(renamed_key, f);
+    }
+  }
 }
 
 Index TetComplex::add_point(const Vec3& p) {
@@ -195,11 +227,11 @@ double TetComplex::worst_quality() const {
   return q;
 }
 
-void TetComplex::write_to(TetMesh& mesh) const {
+void TetComplex::write_to(TetMesh& mesh, bool keep_numbers) const {
   std::vector<Index> renumber(points_.size(), kNoIndex);
   mesh.points.clear();
   for (Index v = 0; v < num_points(); ++v)
-    if (!star_[v].empty()) {
+    if (keep_numbers || !star_[v].empty()) {
       renumber[v] = static_cast<Index>(mesh.points.size());
       mesh.points.push_back(points_[v]);
     }
@@ -212,8 +244,14 @@ void TetComplex::write_to(TetMesh& mesh) const {
     mesh.cells.push_back(c);
     mesh.cell_region.push_back(region_[t]);
   }
-  for (auto& f : mesh.boundary_faces)
-    for (Index& v : f) v = renumber[v];
+  mesh.boundary_faces.clear();
+  mesh.boundary_tag.clear();
+  for (std::size_t f = 0; f < boundary_.size(); ++f) {
+    if (boundary_[f][0] == kNoIndex) continue;
+    mesh.boundary_faces.push_back(
+        {renumber[boundary_[f][0]], renumber[boundary_[f][1]], renumber[boundary_[f][2]]});
+    if (f < boundary_tag_.size()) mesh.boundary_tag.push_back(boundary_tag_[f]);
+  }
 }
 
 }  // namespace volmesh::improve

@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <span>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -52,10 +53,16 @@ class TetComplex {
   // Whether every tet is positive by the exact test.
   bool all_positive(std::span<const Tet> tets) const;
 
+  // Point `gone`'s fixed faces renamed after a contraction into `kept`: those holding both
+  // go, the others hold `kept` instead (boundary faces keep their slot and tag).
+  void rename_fixed(Index gone, Index kept);
+
   // A new free point, with no tet yet.
   Index add_point(const Vec3& p);
   // The old tets (one region) give way to the fresh ones; returns the fresh ones' slots.
   std::vector<Index> replace(std::span<const Index> old, std::span<const Tet> fresh);
+  // Point v moves no more.
+  void pin(Index v) { freedom_[v] = Freedom::Pinned; }
   // Moves a point that may move (the caller has checked its star).
   void move(Index v, const Vec3& p);
 
@@ -69,8 +76,10 @@ class TetComplex {
   bool changed_since(Index v, long long time) const { return stamp_[v] > time; }
 
   // The mesh as it stands: live tets in slot order, points without tets dropped (the others
-  // keep their order), `mesh`'s boundary faces and tags kept and renumbered.
-  void write_to(TetMesh& mesh) const;
+  // keep their order), the boundary faces (`mesh`'s, renamed by contractions) and their tags
+  // renumbered.
+  // With `keep_numbers`, every point stays, with its number, tets or none.
+  void write_to(TetMesh& mesh, bool keep_numbers = false) const;
 
  private:
   struct FaceHash {
@@ -93,6 +102,10 @@ class TetComplex {
   std::vector<long long> stamp_;
   long long clock_ = 0;
   std::unordered_set<std::array<Index, 3>, FaceHash> fixed_;  // sorted corners
+  // The boundary faces in the mesh's order (a removed one: kNoIndex corners) and their tags.
+  std::vector<std::array<Index, 3>> boundary_;
+  std::vector<Index> boundary_tag_;
+  std::unordered_map<std::array<Index, 3>, Index, FaceHash> boundary_slot_;  // sorted → slot
 };
 
 // Whether (a, b, c, d) is an even permutation of the stored corners (so positive too).

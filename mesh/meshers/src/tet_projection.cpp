@@ -8,6 +8,8 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/improve/coarsen.hpp"
+#include "volmesh/improve/improve.hpp"
 #include "volmesh/tet/directions.hpp"
 #include "volmesh/tet/projection.hpp"
 #include "volmesh/tet/rounding.hpp"
@@ -47,6 +49,7 @@ nlohmann::json summary_of(const tet::ProjectionStats& s, const tet::Rounding& ro
                                {"value", s.enclosed_volume.get_d()}}},
           {"rounding", {{"moved_points", rounding.moved_points},
                         {"repaired_prisms", rounding.repaired_prisms},
+                        {"repaired_tets", rounding.repaired_tets},
                         {"directions_tried", rounding.directions_tried}}},
           {"stage_seconds", stages}};
 }
@@ -90,6 +93,32 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
       if (attempt + 1 == attempts.size()) throw;
     }
   }
+  const bool improve_asked = given<bool>(request.options, "improve").value_or(false);
+  std::vector<improve::Slide> slides;
+  if (improve_asked) slides = tet::surface_slides(exact, surfaces, tets);
+  const std::vector<Index> renumber = tet::drop_unused_points(tets);
+  nlohmann::json improvement;
+  if (improve_asked) {
+    improve::CoarsenOptions coarsen;
+    for (std::size_t v = 0; v < slides.size(); ++v)
+      if (renumber[v] != kNoIndex) slides[renumber[v]] = slides[v];
+    slides.resize(tets.points.size());
+    coarsen.slides = std::move(slides);
+    coarsen.progress = part_of(request.progress, 0.9, 0.93);
+    const improve::CoarsenStats c = improve::coarsen_tet_mesh(tets, coarsen);
+    improve::ImproveOptions options;
+    options.progress = part_of(request.progress, 0.93, 1.0);
+    const improve::ImproveStats i = improve::improve_tet_mesh(tets, options);
+    improvement = {{"coarsen", {{"tets", {c.tets_before, c.tets_after}},
+                                {"points", {c.points_before, c.points_after}},
+                                {"interior_contractions", c.interior},
+                                {"boundary_contractions", c.boundary}}},
+                   {"improve", {{"tets", i.after.tets},
+                                {"min_dihedral_deg", {i.before.min_dihedral_deg, i.after.min_dihedral_deg}},
+                                {"max_dihedral_deg", {i.before.max_dihedral_deg, i.after.max_dihedral_deg}},
+                                {"passes", i.passes},
+                                {"seconds", i.seconds}}}};
+  }
   drop_cavities(tets, surfaces);
   MeshResult r;
   r.mesh = to_poly_mesh(tets);
@@ -101,6 +130,7 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
       h = std::max(h, (tets.points[t[a]] - tets.points[t[b]]).norm());
   r.h = h > 0.0 ? h : box.size().maxCoeff();
   r.summary = summary_of(exact.stats, rounding, check_seconds, round_seconds);
+  if (improve_asked) r.summary["improvement"] = improvement;
   return r;
 }
 
@@ -115,6 +145,10 @@ const Registration registered{MesherInfo{
                          "triangles)",
                  .type = OptionSpec::Type::choice,
                  .choices = {"x", "y", "z", "auto"}},
+                {.name = "improve",
+                 .help = "coarsen the mesh by edge contraction (interior points, then surface "
+                         "Steiner points within their input triangle or edge), then improve it",
+                 .type = OptionSpec::Type::flag},
                 {.name = "surface-size",
                  .help = "for a domain not made of triangles (analytic, domain file, SDF grid, "
                          "image): triangulate its surfaces at this edge first",

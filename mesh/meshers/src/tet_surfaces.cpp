@@ -11,6 +11,7 @@
 #include "volmesh/domain/surface.hpp"
 #include "volmesh/geometry/self_intersections.hpp"
 #include "volmesh/surfacing/implicit.hpp"
+#include "volmesh/tet/rounding.hpp"
 
 namespace volmesh::meshers {
 
@@ -87,7 +88,6 @@ void drop_cavities(TetMesh& mesh, const std::vector<tet::ProjectionSurface>& sur
     if (mesh.cell_region[c] == 0)
       for (const auto& f : kTetFaces)
         filled.insert(key({mesh.cells[c][f[0]], mesh.cells[c][f[1]], mesh.cells[c][f[2]]}));
-  std::vector<Index> renumber(mesh.points.size(), -1);
   std::size_t kept = 0;
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     if (mesh.cell_region[c] == 0) continue;
@@ -102,23 +102,12 @@ void drop_cavities(TetMesh& mesh, const std::vector<tet::ProjectionSurface>& sur
       mesh.boundary_faces.push_back(face);
       mesh.boundary_tag.push_back(tag);
     }
-    for (const Index v : cell) renumber[v] = 0;
     mesh.cells[kept] = cell;
     mesh.cell_region[kept++] = mesh.cell_region[c];
   }
   mesh.cells.resize(kept);
   mesh.cell_region.resize(kept);
-  Index next = 0;
-  for (std::size_t p = 0; p < mesh.points.size(); ++p) {
-    if (renumber[p] < 0) continue;
-    renumber[p] = next;
-    mesh.points[next++] = mesh.points[p];
-  }
-  mesh.points.resize(next);
-  for (auto& c : mesh.cells)
-    for (Index& v : c) v = renumber[v];
-  for (auto& f : mesh.boundary_faces)
-    for (Index& v : f) v = renumber[v];
+  tet::drop_unused_points(mesh);
 }
 
 }  // namespace volmesh::meshers

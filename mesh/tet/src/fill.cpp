@@ -47,6 +47,7 @@ void fill(State& state, ProjectionMesh& mesh) {
       if (t.on != kNoIndex) {
         mesh.boundary_faces.push_back(t.points);
         mesh.boundary_surface.push_back(state.input.surface[t.on]);
+        mesh.boundary_carrier.push_back(state.input.triangles[t.on]);
       }
     }
   }

@@ -2,13 +2,16 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <string>
 
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/validity.hpp"
+#include "volmesh/improve/repair.hpp"
 
 namespace volmesh::tet {
 
@@ -38,6 +41,54 @@ bool positive(const std::vector<Vec3>& p, const std::array<Index, 4>& t) {
 
 }  // namespace
 
+std::vector<improve::Slide> surface_slides(const ProjectionMesh& exact,
+                                           const std::vector<ProjectionSurface>& surfaces,
+                                           const TetMesh& mesh) {
+  std::vector<std::vector<std::array<Index, 3>>> around(mesh.points.size());
+  for (std::size_t f = 0; f < exact.boundary_faces.size(); ++f)
+    for (const Index v : exact.boundary_faces[f]) {
+      auto corners = exact.boundary_carrier[f];
+      std::sort(corners.begin(), corners.end());
+      if (std::find(around[v].begin(), around[v].end(), corners) == around[v].end())
+        around[v].push_back(corners);
+    }
+  std::vector<improve::Slide> slides(mesh.points.size());
+  const auto at = [&](Index v) { return mesh.points[v]; };
+  std::size_t input_points = 0;
+  for (const ProjectionSurface& s : surfaces) input_points += s.surface.points.size();
+  for (std::size_t v = input_points; v < around.size(); ++v) {
+    const auto& t = around[v];
+    if (t.size() == 1) {
+      slides[v] = {improve::SlideKind::Plane, {at(t[0][0]), at(t[0][1]), at(t[0][2])}};
+    } else if (t.size() == 2) {
+      std::vector<Index> shared;
+      std::set_intersection(t[0].begin(), t[0].end(), t[1].begin(), t[1].end(),
+                            std::back_inserter(shared));
+      if (shared.size() == 2)
+        slides[v] = {improve::SlideKind::Line, {at(shared[0]), at(shared[1]), at(shared[1])}};
+    }
+  }
+  return slides;
+}
+
+std::vector<Index> drop_unused_points(TetMesh& mesh) {
+  std::vector<Index> renumber(mesh.points.size(), kNoIndex);
+  for (const auto& c : mesh.cells)
+    for (const Index v : c) renumber[v] = 0;
+  Index next = 0;
+  for (std::size_t p = 0; p < mesh.points.size(); ++p) {
+    if (renumber[p] == kNoIndex) continue;
+    renumber[p] = next;
+    mesh.points[next++] = mesh.points[p];
+  }
+  mesh.points.resize(next);
+  for (auto& c : mesh.cells)
+    for (Index& v : c) v = renumber[v];
+  for (auto& f : mesh.boundary_faces)
+    for (Index& v : f) v = renumber[v];
+  return renumber;
+}
+
 TetMesh round_to_doubles(const ProjectionMesh& exact,
                          const std::vector<ProjectionSurface>& surfaces, Rounding& rounding) {
   TetMesh mesh;
@@ -65,14 +116,39 @@ TetMesh round_to_doubles(const ProjectionMesh& exact,
     for (const Index t : tets)
       for (int k = 0; k < 3; ++k, ++corners) mean += mesh.points[mesh.cells[t][k]];
     mean /= static_cast<double>(corners);
+    const Vec3 rounded = mesh.points[centre];
     mesh.points[centre] = mean;
-    for (const Index t : tets)
-      if (!positive(mesh.points, mesh.cells[t]))
-        throw InputError("tet-projection: rounding to doubles flattens or inverts tet " +
-                         std::to_string(t) + " near (" + std::to_string(mean.x()) + ", " +
-                         std::to_string(mean.y()) + ", " + std::to_string(mean.z()) +
-                         "), beyond repair by moving its prism's centre; nothing written");
-    ++rounding.repaired_prisms;
+    const bool all_positive = std::all_of(tets.begin(), tets.end(), [&](Index t) {
+      return positive(mesh.points, mesh.cells[t]);
+    });
+    if (all_positive)
+      ++rounding.repaired_prisms;
+    else
+      mesh.points[centre] = rounded;  // left to the local changes below
+  }
+
+  for (const ProjectionSurface& s : surfaces) mesh.tag_names.push_back(s.name);
+  for (std::size_t f = 0; f < exact.boundary_faces.size(); ++f) {
+    const Index s = exact.boundary_surface[f];
+    if (!surfaces[s].outermost) continue;
+    mesh.boundary_faces.push_back(exact.boundary_faces[f]);
+    mesh.boundary_tag.push_back(s);
+  }
+
+  // The tets still flat or inverted, repaired in doubles by local changes; the surface points
+  // stay (they come before the prism centres, so they keep their numbers).
+  const improve::RepairStats repair =
+      improve::repair_flat_tets(mesh, surface_slides(exact, surfaces, mesh));
+  rounding.repaired_tets = repair.bad_before;
+  if (repair.bad_after > 0) {
+    Index t = 0;
+    while (positive(mesh.points, mesh.cells[t])) ++t;
+    const Vec3& at = mesh.points[mesh.cells[t][0]];
+    throw InputError("tet-projection: rounding to doubles flattens or inverts " +
+                     std::to_string(repair.bad_after) + " tets (one near (" +
+                     std::to_string(at.x()) + ", " + std::to_string(at.y()) + ", " +
+                     std::to_string(at.z()) + ")) that no flip, move or contraction in doubles "
+                     "makes positive: this mesh cannot be represented in doubles; nothing written");
   }
 
   // The checker (validity.hpp) calls a face whose area is rounding noise degenerate; a sliver
@@ -90,13 +166,6 @@ TetMesh round_to_doubles(const ProjectionMesh& exact,
                          "nothing written");
     }
 
-  for (const ProjectionSurface& s : surfaces) mesh.tag_names.push_back(s.name);
-  for (std::size_t f = 0; f < exact.boundary_faces.size(); ++f) {
-    const Index s = exact.boundary_surface[f];
-    if (!surfaces[s].outermost) continue;
-    mesh.boundary_faces.push_back(exact.boundary_faces[f]);
-    mesh.boundary_tag.push_back(s);
-  }
   return mesh;
 }
 

@@ -79,6 +79,8 @@ struct ProjectionMesh {
   // The tets' faces on the surfaces, oriented out of the tet, with the surface they lie on.
   std::vector<std::array<Index, 3>> boundary_faces;
   std::vector<Index> boundary_surface;
+  // The input triangle each boundary face lies in, by its corners (input points).
+  std::vector<std::array<Index, 3>> boundary_carrier;
   ProjectionStats stats;
 };
 
