@@ -56,6 +56,10 @@ constexpr double kCornerSpan = 0.25;
 constexpr int kUntangleAttempts = 2;
 // The soft minimum's sharpness grows by this factor from one round to the next.
 constexpr double kSharpening = 2.0;
+// A node is not taken onto the surface where that leaves an edge at it shorter than this
+// fraction of its shortest edge at the start: two nodes with one closest point (beside a tip or
+// a crease) would merge, which the scaled measures, ratios of lengths, do not see.
+constexpr double kShortestSnapped = 0.05;
 // Share of the run the untangling takes, the optimisation the rest.
 constexpr double kUntangleShare = 0.5;
 
@@ -185,7 +189,8 @@ double least_around(const Problem& p, std::size_t v) {
 // Takes the sliding boundary nodes, which step in their tangent planes (or along their creases)
 // and so leave a curved surface by the square of their steps, back onto it: each to its closest
 // point, in node order, unless that makes the least measure around it (least_around) fall below
-// the lesser of what it was and `floor`. Returns how many stayed off.
+// the lesser of what it was and `floor` or an edge at it nearly collapses. Returns how many
+// stayed off.
 Index snap(const Problem& p, double floor) {
   Index held = 0;
   if (!p.surface) return held;
@@ -202,7 +207,8 @@ Index snap(const Problem& p, double floor) {
     const double before = least_around(p, v);
     const Vec3 kept = points[v];
     points[v] = targets[v];
-    if (least_around(p, v) < std::min(before, floor)) {
+    if (least_around(p, v) < std::min(before, floor) ||
+        shortest_edge(p.mesh, p.hexes[v], v) < kShortestSnapped * p.reach[v]) {
       points[v] = kept;
       ++held;
     }
