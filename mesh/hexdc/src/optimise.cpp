@@ -60,6 +60,9 @@ constexpr double kSharpening = 2.0;
 // fraction of its shortest edge at the start: two nodes with one closest point (beside a tip or
 // a crease) would merge, which the scaled measures, ratios of lengths, do not see.
 constexpr double kShortestSnapped = 0.05;
+// The optimisation lets no hex edge fall below this fraction of its hex's mean edge at the start
+// (or below its start, if shorter).
+constexpr double kShortestEdge = 1e-3;
 // Share of the run the untangling takes, the optimisation the rest.
 constexpr double kUntangleShare = 0.5;
 
@@ -243,6 +246,9 @@ struct Evaluation {
   // Optimisation: the least centre measure or boundary quad corner sine, the measures that may
   // start below zero without a folded tet.
   double least_other = 1.0;
+  // Optimisation: the least hex edge over its hex's mean edge at the start, which the scaled
+  // measures, ratios of lengths, do not see shrink.
+  double least_edge = 1.0;
   VectorXd gradient;
 };
 
@@ -286,7 +292,7 @@ Evaluation softmin_energy(const Problem& p, double beta) {
   const HexMesh& mesh = p.mesh;
   const std::size_t hexes = mesh.cells.size(), quads = mesh.boundary_faces.size();
   HexSlots slots(hexes);
-  std::vector<double> centre(hexes), quad_value(quads), quad_least(quads);
+  std::vector<double> centre(hexes), edge(hexes), quad_value(quads), quad_least(quads);
   std::vector<std::array<Vec3, 4>> quad_gradient(quads);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
     for (std::size_t h = range.begin(); h < range.end(); ++h) {
@@ -294,6 +300,11 @@ Evaluation softmin_energy(const Problem& p, double beta) {
       const auto q = hex_tet_qualities(corners);
       slots.least[h] = *std::min_element(q.begin(), q.end());
       centre[h] = hex_centre_quality(corners);
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto& [a, b] : kHexEdges)
+        shortest = std::min(shortest, (corners[static_cast<std::size_t>(b)] -
+                                       corners[static_cast<std::size_t>(a)]).norm());
+      edge[h] = shortest / p.size[h];
     }
   });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
@@ -305,6 +316,7 @@ Evaluation softmin_energy(const Problem& p, double beta) {
   Evaluation e;
   e.least = *std::min_element(slots.least.begin(), slots.least.end());
   e.least_other = *std::min_element(centre.begin(), centre.end());
+  e.least_edge = *std::min_element(edge.begin(), edge.end());
   if (quads > 0)
     e.least_other = std::min(e.least_other, *std::min_element(quad_least.begin(), quad_least.end()));
   const double shift = std::min(e.least, e.least_other);
@@ -489,9 +501,13 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
     };
     // A hex's centre or a boundary quad's corner may not fold, nor a folded one get worse.
     const double other_floor = std::min(at.least_other, kPositive);
+    // Nor an edge shrink toward nothing.
+    const double edge_floor = std::min(at.least_edge, kShortestEdge);
     stats.quality_iterations += descend(
         p, options.quality_iterations, [&] { return softmin_energy(p, beta); },
-        [&](const Evaluation& e) { return e.least > kPositive && e.least_other >= other_floor; },
+        [&](const Evaluation& e) {
+          return e.least > kPositive && e.least_other >= other_floor && e.least_edge >= edge_floor;
+        },
         tick, at);
     stats.held_off_surface = snap(p, std::min(at.least, at.least_other));
     beta *= kSharpening;

@@ -16,7 +16,9 @@
 //     to 1 in a cube) and the sines of the boundary quads' angles (below 180°), raising the
 //     worst of them, in rounds of a sharper soft minimum (β doubled each round). Its line search
 //     never accepts a point with a tet that is not positive, nor one where a centre or a
-//     boundary quad corner folds (or a folded one gets worse).
+//     boundary quad corner folds (or a folded one gets worse), nor one where a hex edge falls
+//     below 1e-3 of its hex's mean edge (the scaled measures, ratios of lengths, let two nodes
+//     meet).
 // Boundary nodes slide on the surface: they step in their tangent planes (crease nodes along
 // their crease, corner nodes not at all) and, after each round, go back onto the surface's
 // closest point unless that would fold a tet or lower the worst measure (held_off_surface
