@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <set>
 
 #include "cell_shapes.hpp"
 #include "refusals.hpp"
@@ -169,28 +170,36 @@ TEST(CliMesh, HexdcWritesValidHexahedraAndReportsItsFigures) {
   EXPECT_GT(v.total_volume, 0.94 * ball);
 }
 
-// The boundary refinement puts every boundary node of the ball on the unit sphere (builtin:ball
-// has radius 1) up to rounding: the solver's TRUE boundary.
+// Projection and the optimiser put the ball's boundary nodes on the unit sphere (builtin:ball has
+// radius 1) up to rounding: the solver's TRUE boundary; the few the optimiser holds off it
+// (returning them would lower the worst measure) stay within a thousandth of the radius.
 TEST(CliMesh, HexdcPutsTheBallsBoundaryNodesOnTheSphere) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-sphere");
   const fs::path out = dir / "ball.vtu";
   const auto r = run_volmesh("mesh hexdc builtin:ball --level 4 --json -o " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto projection = nlohmann::json::parse(r.out)["projection"];
-  EXPECT_GT(projection["nodes_projected"].get<Index>(), 0);
-  EXPECT_EQ(projection["nodes_kept_on_features"], 0);
-  EXPECT_EQ(projection["nodes_held_back"], 0);
-  EXPECT_EQ(projection["max_distance_left"], 0.0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["projection"]["nodes_projected"].get<Index>(), 0);
+  EXPECT_EQ(j["projection"]["nodes_kept_on_features"], 0);
+  EXPECT_EQ(j["optimisation"]["crease_nodes"], 0);
+  EXPECT_EQ(j["optimisation"]["corner_nodes"], 0);
+  const Index held = j["optimisation"]["held_off_surface"].get<Index>();
   const PolyMesh mesh = read_mesh(out);
+  std::set<Index> off;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     if (!mesh.is_boundary(f)) continue;
-    for (const Index v : mesh.face(f)) ASSERT_NEAR(mesh.points[v].norm(), 1.0, 1e-9) << v;
+    for (const Index v : mesh.face(f)) {
+      ASSERT_NEAR(mesh.points[v].norm(), 1.0, 1e-3) << v;
+      if (std::abs(mesh.points[v].norm() - 1.0) > 1e-9) off.insert(v);
+    }
   }
+  EXPECT_EQ(static_cast<Index>(off.size()), held);
+  EXPECT_LT(held, j["optimisation"]["boundary_nodes"].get<Index>() / 100);
 }
 
-// The torus's concave side leaves 30 of 436 hexes failing the corner tets at level 4 before
-// pillowing; the buffer layer, smoothing and the optimisation of the worst hexes repair them
-// all and raise the least scaled Jacobian above 0.3 (measured 0.52).
+// The torus's concave side leaves hexes failing the corner tets at level 4 before pillowing; the
+// buffer layer and the global optimiser repair them all and raise the least scaled Jacobian
+// above 0.3.
 TEST(CliMesh, HexdcPillowingRepairsTheTorusAtLevel4) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-torus");
   const fs::path out = dir / "torus.vtu";
@@ -206,8 +215,8 @@ TEST(CliMesh, HexdcPillowingRepairsTheTorusAtLevel4) {
 }
 
 // Elephant at level 5 on a 33^3 grid: projection leaves buffer hexes folded under their outer
-// quads, which no move of an interior node unfolds; with the boundary nodes sliding on the
-// surface (and off a crease where a quad has three corners on it) every hex passes.
+// quads, which no move of an interior node unfolds; the optimiser's untangling, the boundary
+// nodes sliding on the surface, unfolds every one.
 TEST(CliMesh, HexdcUnfoldsBufferHexesWithTheBoundaryOnTheSurface) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-elephant");
   const fs::path out = dir / "elephant.vtu";
@@ -216,8 +225,8 @@ TEST(CliMesh, HexdcUnfoldsBufferHexesWithTheBoundaryOnTheSurface) {
                              dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_GT(j["untangling"]["on_surface_moves"].get<Index>(), 0);
-  EXPECT_EQ(j["untangling"]["on_surface_degenerate_after"], 0);
+  EXPECT_GT(j["optimisation"]["negative_tets_before"].get<Index>(), 0);
+  EXPECT_EQ(j["optimisation"]["negative_tets_after"], 0);
   EXPECT_EQ(j["stages"]["improved"]["degenerate_hexes"], 0);
   EXPECT_GT(j["stages"]["improved"]["min_scaled_jacobian"].get<double>(), 0.0);
   EXPECT_TRUE(check_validity(read_mesh(out)).valid());
@@ -286,7 +295,7 @@ TEST(CliMesh, HexdcRefusesABadRefineBoxWithOneLine) {
   }
 }
 
-TEST(CliMesh, HexdcRefusesBadLevelsAndFoldedHexesWithOneLine) {
+TEST(CliMesh, HexdcRefusesBadLevelsWithOneLine) {
   const fs::path dir = test::scratch_dir("mesh-hexdc-bad");
   const fs::path out = dir / "out.vtu";
   // A signed-distance grid with no sample inside, and one of 10 samples per axis.
@@ -311,11 +320,7 @@ TEST(CliMesh, HexdcRefusesBadLevelsAndFoldedHexesWithOneLine) {
            {empty + " --level 5", "--level 5 is deeper than the grid of empty.rawiv allows"},
            {VOLMESH_TEST_DATA "/bad/open_surface.off --level 3", "the surface has a hole"},
            {"builtin:ball --level 5 --dim 4",
-            "--level 5 is deeper than the grid of builtin:ball allows: 17 samples per axis"},
-           // At level 4 one buffer hex at fandisk's sharp edges stays folded however its
-           // interior and boundary nodes move: 1 of 881 hexes fails the corner tets.
-           {VOLMESH_CGAL_DATA "/meshes/fandisk.off --level 4",
-            "hexes of fandisk.off fail the ten corner tets"}}) {
+            "--level 5 is deeper than the grid of builtin:ball allows: 17 samples per axis"}}) {
     const auto r = run_volmesh("mesh hexdc " + args + " -o " + out.string(), dir);
     EXPECT_EQ(r.exit_code, 1) << args;
     EXPECT_EQ(test::count_lines(r.err), 1) << args << ": " << r.err;

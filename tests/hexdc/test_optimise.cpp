@@ -118,11 +118,18 @@ TEST(OptimiseHexes, BoundaryNodesStayOnTheSurface) {
   EXPECT_EQ(invalid_hexes(mesh), 0);
   EXPECT_GT(stats.boundary_nodes, 0);
   EXPECT_EQ(stats.crease_nodes + stats.corner_nodes, 0);  // a sphere has no features
+  // Every boundary node on the sphere but those held off it (whose return would lower the worst
+  // measure), and those within a small fraction of the radius.
   const std::vector<bool> boundary = on_boundary(mesh);
+  Index off = 0;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (boundary[v]) {
-      EXPECT_NEAR(mesh.points[v].norm(), kRadius, 1e-12) << v;
+      const double gap = std::abs(mesh.points[v].norm() - kRadius);
+      off += gap > 1e-12 ? 1 : 0;
+      EXPECT_LT(gap, 1e-3 * kRadius) << v;
     }
+  EXPECT_EQ(off, stats.held_off_surface);
+  EXPECT_LT(off, stats.boundary_nodes / 100);
   EXPECT_GT(min_scaled_jacobian(mesh), 0.5);
 }
 

@@ -13,7 +13,6 @@
 #include "volmesh/hexdc/hex_quality.hpp"
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/project.hpp"
-#include "volmesh/hexdc/smoothing.hpp"
 
 namespace volmesh {
 namespace {
@@ -27,12 +26,10 @@ using test_hexdc::invalid_hexes;
 
 constexpr double kRadius = 0.8;   // of the sphere
 
-// The field's uniform mesh at `level`, pillowed and smoothed: the mesher's stages before
-// projection.
-HexMesh improved_mesh(const VoxelGrid& field, int level) {
+// The field's uniform mesh at `level`, pillowed: the mesher's stages before projection.
+HexMesh pillowed_mesh(const VoxelGrid& field, int level) {
   HexMesh mesh = to_hex_mesh(hexdc_uniform(field, level, nullptr));
   pillow_boundary(mesh);
-  smooth_hexes(mesh);
   return mesh;
 }
 
@@ -51,17 +48,20 @@ TEST(ProjectBoundary, SphereNodesEndOnTheSphereAndNoHexIsInvalid) {
       test_fields::sample_paper_cube([](const Vec3& p) { return kRadius - p.norm(); });
   for (int level = 3; level <= 5; ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
-    HexMesh mesh = improved_mesh(field, level);
+    HexMesh mesh = pillowed_mesh(field, level);
     ASSERT_EQ(invalid_hexes(mesh), 0);
     const ProjectStats stats = project_boundary(mesh, closest_on_sphere);
     EXPECT_EQ(invalid_hexes(mesh), 0);
     EXPECT_EQ(stats.invalid_hexes_after, 0);
     EXPECT_GT(stats.max_distance_before, 1e-4);  // the QEF vertices were off the sphere
-    EXPECT_EQ(stats.held_back, 0);
-    EXPECT_EQ(stats.projected + stats.feature_nodes, stats.boundary_nodes);
+    // The guard holds a few back (the optimiser takes them on); the rest end on the sphere.
+    EXPECT_LT(stats.held_back, stats.boundary_nodes / 10);
+    EXPECT_EQ(stats.projected + stats.feature_nodes + stats.held_back, stats.boundary_nodes);
     EXPECT_EQ(stats.feature_nodes, 0);  // a sphere has no crease at these levels
+    Index on_sphere = 0;
     for (const Index v : boundary_nodes(mesh))
-      EXPECT_NEAR(mesh.points[static_cast<std::size_t>(v)].norm(), kRadius, 1e-9) << v;
+      on_sphere += std::abs(mesh.points[static_cast<std::size_t>(v)].norm() - kRadius) < 1e-9;
+    EXPECT_EQ(on_sphere, stats.boundary_nodes - stats.held_back);
     EXPECT_GT(stats.min_scaled_jacobian_after, 0.0);
   }
 }
@@ -72,7 +72,7 @@ TEST(ProjectBoundary, SphereNodesEndOnTheSphereAndNoHexIsInvalid) {
 TEST(ProjectBoundary, BoxEdgeAndCornerNodesEndOnTheEdges) {
   const VoxelGrid field = test_fields::sample_paper_cube(box_distance);
   const double near_edge = 0.25 * field.spacing.x();
-  HexMesh mesh = improved_mesh(field, 4);
+  HexMesh mesh = pillowed_mesh(field, 4);
   const std::vector<Vec3> before = mesh.points;
   const ProjectStats stats = project_boundary(mesh, closest_on_box);
   EXPECT_EQ(invalid_hexes(mesh), 0);

@@ -12,6 +12,14 @@ namespace {
 // How far inside a boundary quad's centre feature_point probes the surface's normal, in shortest
 // edges at the node: well below the half edge from the centre to the crease.
 constexpr double kProbeDepth = 0.1;
+// How far from a node surface_normals_at probes, in shortest edges at the node: near enough
+// that a smooth surface's normal barely turns between the probes (a curvature radius of one
+// edge turns it by about this many radians), far enough to reach both faces of a crease the
+// node lies on.
+constexpr double kNodeProbe = 0.05;
+// How deep each of those probes lies, in its step toward the quad's centre: shallower than that
+// step, so that a probe beside a crease or corner is nearest its own quad's face.
+constexpr double kNodeProbeDepth = 0.25;
 
 // The surface's tangent plane under boundary quad q: a probe a little inside the quad's centre
 // and its closest point, whose segment is normal to the surface (the quad's own normal if the
@@ -34,23 +42,23 @@ ProbedPlane probe_plane(const HexMesh& mesh, Index q, const SurfaceProjector& cl
 
 }  // namespace
 
-std::vector<Vec3> surface_normals(const HexMesh& mesh, const std::vector<Index>& quads,
-                                  const SurfaceProjector& closest_point, double reach) {
+std::vector<Vec3> surface_normals_at(const HexMesh& mesh, const std::vector<Index>& quads,
+                                     const SurfaceProjector& closest_point, std::size_t v,
+                                     double reach) {
+  const Vec3& x = mesh.points[v];
+  const double step = kNodeProbe * reach;
   std::vector<Vec3> normals;
   normals.reserve(quads.size());
-  for (const Index q : quads) normals.push_back(probe_plane(mesh, q, closest_point, reach).normal);
+  for (const Index q : quads) {
+    Vec3 centre = Vec3::Zero();
+    for (const Index c : mesh.boundary_faces[static_cast<std::size_t>(q)])
+      centre += mesh.points[static_cast<std::size_t>(c)] / 4.0;
+    const Vec3 outward = quad_vector_area(mesh, q).normalized();
+    const Vec3 probe = x + step * ((centre - x).normalized() - kNodeProbeDepth * outward);
+    const Vec3 found = (closest_point(probe) - probe).normalized();
+    normals.push_back(found.isZero() ? outward : found);
+  }
   return normals;
-}
-
-bool on_surface_feature(const HexMesh& mesh, const std::vector<Index>& quads,
-                        const SurfaceProjector& closest_point, double reach, double cos_feature) {
-  const std::vector<Vec3> normals = surface_normals(mesh, quads, closest_point, reach);
-  Vec3 sum = Vec3::Zero();
-  for (const Vec3& n : normals) sum += n;
-  const Vec3 mean = sum.normalized();
-  if (mean.isZero()) return true;
-  return std::any_of(normals.begin(), normals.end(),
-                     [&](const Vec3& n) { return n.dot(mean) < cos_feature; });
 }
 
 // Where a crease or corner node belongs: the point nearest it on the surface's tangent planes

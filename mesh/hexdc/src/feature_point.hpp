@@ -14,15 +14,14 @@ namespace volmesh::hexdc_detail {
 Vec3 feature_point(const HexMesh& mesh, const std::vector<Index>& quads,
                    const SurfaceProjector& closest_point, std::size_t v, double reach);
 
-// The surface's unit normals under the boundary quads `quads` (probed as feature_point's planes).
-std::vector<Vec3> surface_normals(const HexMesh& mesh, const std::vector<Index>& quads,
-                                  const SurfaceProjector& closest_point, double reach);
-
-// Whether node v is on a crease or corner of the surface itself: the surface's normals under its
-// boundary quads (probed as feature_point's planes) leave their mean by more than the feature
-// angle. Unlike the mesh's quad normals, these do not make a node with a folded quad a feature.
-bool on_surface_feature(const HexMesh& mesh, const std::vector<Index>& quads,
-                        const SurfaceProjector& closest_point, double reach, double cos_feature);
+// The surface's unit normals beside node v, one per boundary quad of `quads`: each from a probe a
+// small fraction of `reach` from the node toward the quad's centre and inward, and the segment
+// to its closest point. They spread on a crease or corner of the surface the node lies on and
+// agree on a smooth part however coarse the quads are, unlike the normals under the quads'
+// centres or the quads' own.
+std::vector<Vec3> surface_normals_at(const HexMesh& mesh, const std::vector<Index>& quads,
+                                     const SurfaceProjector& closest_point, std::size_t v,
+                                     double reach);
 
 // The shortest hex edge at node v among `hexes`.
 double shortest_edge(const HexMesh& mesh, const std::vector<Index>& hexes, std::size_t v);

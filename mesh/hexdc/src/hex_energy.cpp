@@ -91,6 +91,26 @@ double scaled_det(const Eigen::Matrix3d& e, double scale, Eigen::Matrix3d* d_edg
   return q;
 }
 
+// The trilinear map's derivatives at the hex's centre, times 4: Verdict's principal axes, each
+// the sum of the four corners on the axis's upper face less the four on its lower one. The
+// sign of corner c in axis a.
+constexpr std::array<std::array<int, 8>, 3> kAxisSign{{{-1, 1, 1, -1, -1, 1, 1, -1},
+                                                       {-1, -1, 1, 1, -1, -1, 1, 1},
+                                                       {-1, -1, -1, -1, 1, 1, 1, 1}}};
+
+Eigen::Matrix3d principal_axes(const std::array<Vec3, 8>& p) {
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Zero();
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t c = 0; c < 8; ++c) axes.col(static_cast<Eigen::Index>(a)) += kAxisSign[a][c] * p[c];
+  return axes;
+}
+
+// Adds the gradient in the principal axes to the eight corners.
+void scatter_axes(const Eigen::Matrix3d& d_axes, HexGradient& g) {
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t c = 0; c < 8; ++c) g[c] += kAxisSign[a][c] * d_axes.col(static_cast<Eigen::Index>(a));
+}
+
 }  // namespace
 
 double hex_barrier(const std::array<Vec3, 8>& p, double size, const Barrier& barrier,
@@ -122,6 +142,10 @@ std::array<double, 10> hex_tet_qualities(const std::array<Vec3, 8>& p) {
   return q;
 }
 
+double hex_centre_quality(const std::array<Vec3, 8>& p) {
+  return scaled_det(principal_axes(p), 1.0, nullptr);
+}
+
 double hex_softmin_terms(const std::array<Vec3, 8>& p, double beta, double shift,
                          HexGradient& gradient) {
   double sum = 0.0;
@@ -133,7 +157,10 @@ double hex_softmin_terms(const std::array<Vec3, 8>& p, double beta, double shift
     sum += w;
     scatter(-beta * w * d_edges, kHexCornerTets[t], gradient);
   }
-  return sum;
+  const double centre = scaled_det(principal_axes(p), 1.0, &d_edges);
+  const double w = std::exp(-beta * (centre - shift));
+  scatter_axes(-beta * w * d_edges, gradient);
+  return sum + w;
 }
 
 namespace {

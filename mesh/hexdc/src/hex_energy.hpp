@@ -30,7 +30,12 @@ double hex_barrier(const std::array<Vec3, 8>& corners, double size, const Barrie
 // hex_shape_quality). Positive exactly when the tet is.
 std::array<double, 10> hex_tet_qualities(const std::array<Vec3, 8>& corners);
 
-// Σ exp(−β (q − shift)) over the ten measures; adds its gradient to `gradient`.
+// The scaled Jacobian at the hex's centre: det / product of lengths of the principal axes (the
+// trilinear map's derivatives there), Verdict's ninth term, which no corner tet bounds.
+double hex_centre_quality(const std::array<Vec3, 8>& corners);
+
+// Σ exp(−β (q − shift)) over the ten measures and the centre's; adds its gradient to
+// `gradient`. With them the soft minimum covers every term of hex_scaled_jacobian.
 double hex_softmin_terms(const std::array<Vec3, 8>& corners, double beta, double shift,
                          HexGradient& gradient);
 

@@ -13,20 +13,12 @@
 namespace volmesh {
 namespace {
 
-// The hexes whose nodes are optimised again after projection, boundary nodes on the surface: the
-// least scaled Jacobian aimed at for every hex, as ProjectOptions' floor. Fewer hexes than
-// untangle_hexes' default target leave the boundary nodes fewer moves to spend on the rest.
-constexpr double kSurfaceUntangleTarget = 0.3;
-
 // Where each stage starts, as a fraction of the run (rough shares of its time).
 constexpr double kContourStart = 0.0;
 constexpr double kRefineStart = 0.06;
 constexpr double kPillowStart = 0.1;
-constexpr double kSmoothStart = 0.13;
-constexpr double kUntangleStart = 0.22;
-constexpr double kProjectStart = 0.28;
-constexpr double kSurfaceUntangleStart = 0.4;
-constexpr double kOptimiseStart = 0.47;
+constexpr double kProjectStart = 0.15;
+constexpr double kOptimiseStart = 0.3;
 constexpr double kCheckStart = 0.97;
 
 RefineStats refine_marked(HexMesh& mesh, const HexdcRefinement& refinement) {
@@ -65,30 +57,20 @@ HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
   r.refine_seconds = seconds_since(refining);
   if (r.refinement.hexes_after != r.refinement.hexes_before) r.refined = hex_mesh_stats(r.mesh);
 
-  // The buffer layer takes every hex off the boundary but one face; smoothing then repairs
-  // hexes it left failing, now that they are interior.
+  // The buffer layer takes every hex off the boundary but one face.
   report(options.progress, "buffer layer", kPillowStart);
-  const Clock::time_point improving = Clock::now();
+  const Clock::time_point pillowing = Clock::now();
   r.pillow = pillow_boundary(r.mesh);
-  report(options.progress, "smoothing", kSmoothStart);
-  r.smoothing = smooth_hexes(r.mesh);
-  report(options.progress, "untangling", kUntangleStart);
-  r.untangling = untangle_hexes(r.mesh);
-  r.improve_seconds = seconds_since(improving);
+  r.pillow_seconds = seconds_since(pillowing);
 
   // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
-  // nodes onto their features.
+  // nodes onto their features, as far as no valid hex folds.
   report(options.progress, "projection", kProjectStart);
   const Clock::time_point projecting = Clock::now();
   r.projection = project_boundary(r.mesh, surface);
-  // Projection fixes the buffer hexes' outer quads where it put them: the worst hexes are
-  // optimised again with the boundary nodes free to slide on the surface.
-  report(options.progress, "untangling on the surface", kSurfaceUntangleStart);
-  r.surface_untangling =
-      untangle_hexes(r.mesh, {.target_quality = kSurfaceUntangleTarget}, surface);
   r.project_seconds = seconds_since(projecting);
-  // What the local moves leave: every free node at once, untangled if a tet is still folded,
-  // then the worst corners and boundary quad angles raised.
+  // Every free node at once: untangled if a tet is folded, then the worst corners and boundary
+  // quad angles raised, the boundary nodes sliding on the surface.
   report(options.progress, "optimisation", kOptimiseStart);
   OptimiseOptions optimise;
   optimise.progress = part_of(options.progress, kOptimiseStart, kCheckStart);

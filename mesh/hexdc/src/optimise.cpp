@@ -52,6 +52,17 @@ constexpr double kPositive = 1e-6;
 // A boundary node is a corner when its surface normals span three directions: the least
 // eigenvalue of Σ n nᵀ above this fraction of (1 − cos feature angle) times the largest.
 constexpr double kCornerSpan = 0.25;
+// Untangling runs, the feature nodes of hexes still folded released before each after the first.
+constexpr int kUntangleAttempts = 2;
+// The soft minimum's sharpness grows by this factor from one round to the next.
+constexpr double kSharpening = 2.0;
+// A node is not taken onto the surface where that leaves an edge at it shorter than this
+// fraction of its shortest edge at the start: two nodes with one closest point (beside a tip or
+// a crease) would merge, which the scaled measures, ratios of lengths, do not see.
+constexpr double kShortestSnapped = 0.05;
+// The optimisation lets no hex edge fall below this fraction of its hex's mean edge at the start
+// (or below its start, if shorter).
+constexpr double kShortestEdge = 1e-3;
 // Share of the run the untangling takes, the optimisation the rest.
 constexpr double kUntangleShare = 0.5;
 
@@ -99,7 +110,7 @@ void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
     }
     ++stats.boundary_nodes;
     if (!p.surface) continue;
-    const std::vector<Vec3> normals = surface_normals(mesh, p.quads[v], p.surface, p.reach[v]);
+    const std::vector<Vec3> normals = surface_normals_at(mesh, p.quads[v], p.surface, v, p.reach[v]);
     Vec3 sum = Vec3::Zero();
     for (const Vec3& normal : normals) sum += normal;
     const Vec3 mean = sum.normalized();
@@ -155,20 +166,34 @@ void restrict_moves(const Problem& p, VectorXd& d) {
   }
 }
 
-// The least tet measure over node v's hexes.
-double least_around(const HexMesh& mesh, const std::vector<Index>& hexes) {
+std::array<Vec3, 4> quad_corners(const HexMesh& mesh, std::size_t q) {
+  std::array<Vec3, 4> corners;
+  for (std::size_t c = 0; c < 4; ++c)
+    corners[c] = mesh.points[static_cast<std::size_t>(mesh.boundary_faces[q][c])];
+  return corners;
+}
+
+// The least of the optimised measures around node v: its hexes' tet and centre measures and its
+// boundary quads' corner sines.
+double least_around(const Problem& p, std::size_t v) {
   double least = std::numeric_limits<double>::infinity();
-  for (const Index h : hexes) {
-    const auto q = hex_tet_qualities(hex_corners(mesh, h));
-    least = std::min(least, *std::min_element(q.begin(), q.end()));
+  for (const Index h : p.hexes[v]) {
+    const auto corners = hex_corners(p.mesh, h);
+    const auto q = hex_tet_qualities(corners);
+    least = std::min({least, *std::min_element(q.begin(), q.end()), hex_centre_quality(corners)});
+  }
+  for (const Index q : p.quads[v]) {
+    const auto sines = quad_sines(quad_corners(p.mesh, static_cast<std::size_t>(q)));
+    least = std::min(least, *std::min_element(sines.begin(), sines.end()));
   }
   return least;
 }
 
 // Takes the sliding boundary nodes, which step in their tangent planes (or along their creases)
 // and so leave a curved surface by the square of their steps, back onto it: each to its closest
-// point, in node order, unless that makes the least tet measure of its hexes fall below the
-// lesser of what it was and `floor`. Returns how many stayed off.
+// point, in node order, unless that makes the least measure around it (least_around) fall below
+// the lesser of what it was and `floor` or an edge at it nearly collapses. Returns how many
+// stayed off.
 Index snap(const Problem& p, double floor) {
   Index held = 0;
   if (!p.surface) return held;
@@ -182,10 +207,11 @@ Index snap(const Problem& p, double floor) {
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (p.kind[v] != NodeKind::surface && p.kind[v] != NodeKind::crease) continue;
     if (targets[v] == points[v]) continue;
-    const double before = least_around(p.mesh, p.hexes[v]);
+    const double before = least_around(p, v);
     const Vec3 kept = points[v];
     points[v] = targets[v];
-    if (least_around(p.mesh, p.hexes[v]) < std::min(before, floor)) {
+    if (least_around(p, v) < std::min(before, floor) ||
+        shortest_edge(p.mesh, p.hexes[v], v) < kShortestSnapped * p.reach[v]) {
       points[v] = kept;
       ++held;
     }
@@ -193,10 +219,36 @@ Index snap(const Problem& p, double floor) {
   return held;
 }
 
+// Makes the crease and corner nodes of every hex with a folded tet slide on the surface as the
+// smooth ones do: a fold whose corners are all held on features may have no way out otherwise.
+// Returns how many were released.
+Index release_folded_features(Problem& p) {
+  Index released = 0;
+  for (Index h = 0; h < p.mesh.num_cells(); ++h) {
+    const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
+    if (*std::min_element(q.begin(), q.end()) > kPositive) continue;
+    for (const Index v : p.mesh.cells[static_cast<std::size_t>(h)]) {
+      NodeKind& kind = p.kind[static_cast<std::size_t>(v)];
+      if (p.quads[static_cast<std::size_t>(v)].empty() || !p.surface ||
+          (kind != NodeKind::crease && kind != NodeKind::fixed))
+        continue;
+      kind = NodeKind::surface;
+      ++released;
+    }
+  }
+  return released;
+}
+
 // The energy at mesh.points with its gradient, and the least tet measure there.
 struct Evaluation {
   double energy = 0.0;
   double least = 0.0;  // the least det J (untangling) or tet measure (optimisation)
+  // Optimisation: the least centre measure or boundary quad corner sine, the measures that may
+  // start below zero without a folded tet.
+  double least_other = 1.0;
+  // Optimisation: the least hex edge over its hex's mean edge at the start, which the scaled
+  // measures, ratios of lengths, do not see shrink.
+  double least_edge = 1.0;
   VectorXd gradient;
 };
 
@@ -233,25 +285,26 @@ Evaluation barrier_energy(const Problem& p, const Barrier& barrier) {
   return e;
 }
 
-std::array<Vec3, 4> quad_corners(const HexMesh& mesh, std::size_t q) {
-  std::array<Vec3, 4> corners;
-  for (std::size_t c = 0; c < 4; ++c)
-    corners[c] = mesh.points[static_cast<std::size_t>(mesh.boundary_faces[q][c])];
-  return corners;
-}
-
-// −(1/β) log Σ exp(−β q) over every hex's ten tet measures and every boundary quad's corner
-// sines, negated: minimising it raises the soft minimum. `least` is the least tet measure.
+// −(1/β) log Σ exp(−β q) over every hex's ten tet measures and centre measure and every boundary
+// quad's corner sines, negated: minimising it raises the soft minimum. `least` is the least tet
+// measure.
 Evaluation softmin_energy(const Problem& p, double beta) {
   const HexMesh& mesh = p.mesh;
   const std::size_t hexes = mesh.cells.size(), quads = mesh.boundary_faces.size();
   HexSlots slots(hexes);
-  std::vector<double> quad_value(quads), quad_least(quads);
+  std::vector<double> centre(hexes), edge(hexes), quad_value(quads), quad_least(quads);
   std::vector<std::array<Vec3, 4>> quad_gradient(quads);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
     for (std::size_t h = range.begin(); h < range.end(); ++h) {
-      const auto q = hex_tet_qualities(hex_corners(mesh, static_cast<Index>(h)));
+      const auto corners = hex_corners(mesh, static_cast<Index>(h));
+      const auto q = hex_tet_qualities(corners);
       slots.least[h] = *std::min_element(q.begin(), q.end());
+      centre[h] = hex_centre_quality(corners);
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto& [a, b] : kHexEdges)
+        shortest = std::min(shortest, (corners[static_cast<std::size_t>(b)] -
+                                       corners[static_cast<std::size_t>(a)]).norm());
+      edge[h] = shortest / p.size[h];
     }
   });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
@@ -262,8 +315,11 @@ Evaluation softmin_energy(const Problem& p, double beta) {
   });
   Evaluation e;
   e.least = *std::min_element(slots.least.begin(), slots.least.end());
-  const double shift = quads > 0 ? std::min(e.least, *std::min_element(quad_least.begin(), quad_least.end()))
-                                 : e.least;
+  e.least_other = *std::min_element(centre.begin(), centre.end());
+  e.least_edge = *std::min_element(edge.begin(), edge.end());
+  if (quads > 0)
+    e.least_other = std::min(e.least_other, *std::min_element(quad_least.begin(), quad_least.end()));
+  const double shift = std::min(e.least, e.least_other);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
     for (std::size_t h = range.begin(); h < range.end(); ++h) {
       slots.gradient[h].fill(Vec3::Zero());
@@ -396,51 +452,72 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   stats.untangle_energy_before = at.energy;
   const auto any_point = [](const Evaluation&) { return true; };
   // A mesh whose tets are all positive goes straight to the optimisation, which raises its worst
-  // measures: the barrier's rounds would trade them for a lower total distortion.
-  const int rounds = at.least > kPositive ? 0 : options.untangle_rounds;
-  int positive_rounds = 0;
-  for (int round = 0; round < rounds; ++round) {
-    report(options.progress, "untangling",
-           kUntangleShare * round / std::max(options.untangle_rounds, 1));
-    const double before = at.energy;
-    stats.untangle_iterations += descend(
-        p, options.untangle_iterations, [&] { return barrier_energy(p, barrier); }, any_point,
-        [](int) {}, at);
-    snap(p, kPositive);
-    at = barrier_energy(p, barrier);
-    ++stats.untangle_rounds;
-    const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
-    const double d = at.least, root = std::hypot(d, barrier.epsilon);
-    barrier.epsilon *= d >= 0.0 ? 1.0 - sigma : 1.0 - sigma * root / (std::abs(d) + root);
-    barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
-    const double settled = std::abs(before - at.energy) / std::abs(at.energy);
-    at = barrier_energy(p, barrier);
-    positive_rounds = d > kPositive ? positive_rounds + 1 : 0;
-    if (positive_rounds > 0 && (settled < kSettled || positive_rounds == kPositiveRounds)) break;
+  // measures: the barrier's rounds would trade them for a lower total distortion. A mesh left
+  // folded has the feature nodes of its folded hexes released onto the surface, and is
+  // untangled again.
+  for (int attempt = 0; attempt < kUntangleAttempts && at.least <= kPositive; ++attempt) {
+    if (attempt > 0) stats.features_released += release_folded_features(p);
+    int positive_rounds = 0;
+    for (int round = 0; round < options.untangle_rounds; ++round) {
+      report(options.progress, "untangling",
+             kUntangleShare * round / std::max(options.untangle_rounds, 1));
+      const double before = at.energy;
+      stats.untangle_iterations += descend(
+          p, options.untangle_iterations, [&] { return barrier_energy(p, barrier); }, any_point,
+          [](int) {}, at);
+      snap(p, kPositive);
+      at = barrier_energy(p, barrier);
+      ++stats.untangle_rounds;
+      const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
+      const double d = at.least, root = std::hypot(d, barrier.epsilon);
+      barrier.epsilon *= d >= 0.0 ? 1.0 - sigma : 1.0 - sigma * root / (std::abs(d) + root);
+      barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
+      const double settled = std::abs(before - at.energy) / std::abs(at.energy);
+      at = barrier_energy(p, barrier);
+      positive_rounds = d > kPositive ? positive_rounds + 1 : 0;
+      if (positive_rounds > 0 && (settled < kSettled || positive_rounds == kPositiveRounds)) break;
+    }
+    if (at.least <= kPositive) {
+      // The last round's ε may hide a fold the barrier has not yet seen: restart from a fresh ε.
+      barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
+      at = barrier_energy(p, barrier);
+    }
   }
   stats.untangle_energy_after = at.energy;
 
-  // 2. The worst measure raised, no tet allowed to turn negative.
-  const double beta = options.softmin_sharpness;
+  // 2. The worst measure raised, no tet allowed to turn negative: rounds of a sharper soft
+  // minimum each (its gap to the true minimum, log(terms) / β, halves each round), the sliding
+  // nodes taken back onto the surface between them.
+  double beta = options.softmin_sharpness;
   at = softmin_energy(p, beta);
   stats.min_quality_before = at.least;
   stats.quality_energy_before = at.energy;
-  if (at.least > kPositive) {
+  const int budget = std::max(options.quality_iterations * options.sharpening_rounds, 1);
+  for (int round = 0; round < options.sharpening_rounds && at.least > kPositive; ++round) {
+    const int spent = stats.quality_iterations;
     const auto tick = [&](int done) {
       report(options.progress, "optimisation",
-             kUntangleShare + (1.0 - kUntangleShare) * done / std::max(options.quality_iterations, 1));
+             kUntangleShare + (1.0 - kUntangleShare) * (spent + done) / budget);
     };
-    stats.quality_iterations = descend(
+    // A hex's centre or a boundary quad's corner may not fold, nor a folded one get worse.
+    const double other_floor = std::min(at.least_other, kPositive);
+    // Nor an edge shrink toward nothing.
+    const double edge_floor = std::min(at.least_edge, kShortestEdge);
+    stats.quality_iterations += descend(
         p, options.quality_iterations, [&] { return softmin_energy(p, beta); },
-        [](const Evaluation& e) { return e.least > kPositive; }, tick, at);
-    stats.held_off_surface = snap(p, at.least);
+        [&](const Evaluation& e) {
+          return e.least > kPositive && e.least_other >= other_floor && e.least_edge >= edge_floor;
+        },
+        tick, at);
+    stats.held_off_surface = snap(p, std::min(at.least, at.least_other));
+    beta *= kSharpening;
     at = softmin_energy(p, beta);
   }
   stats.min_quality_after = at.least;
   stats.quality_energy_after = at.energy;
   stats.invalid_tets_after = count_negative(mesh);
   stats.min_scaled_jacobian_after = least_scaled_jacobian(mesh);
-  // The tets are not the whole scaled Jacobian (its centre term, the quads): a mesh given with
+  // The soft minimum is not the scaled Jacobian alone (the inner tets, the quads): a mesh given with
   // every tet positive is given back as it was if the optimisation lowered its worst one.
   if (stats.invalid_tets_before == 0 &&
       stats.min_scaled_jacobian_after < stats.min_scaled_jacobian_before) {

@@ -9,7 +9,6 @@
 #include "hex_mesh_geometry.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
-#include "volmesh/hexdc/smoothing.hpp"
 #include "volmesh/quality/hex_metrics.hpp"
 
 namespace volmesh {
@@ -52,8 +51,6 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
   HexState state = hex_state(mesh, hex_scaled_jacobian);
   stats.min_scaled_jacobian_before = least_quality(state);
   stats.invalid_hexes_before = invalid_count(state);
-  SmoothingOptions smoothing;
-  smoothing.feature_angle_deg = options.feature_angle_deg;
   std::vector<std::size_t> first_judged(mesh.points.size(), 0);  // guarded_move's `first`
   std::vector<HexGrade> trial;
   const auto move = [&](std::size_t v, const Vec3& target) {
@@ -65,10 +62,6 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
         return;
   };
   for (int pass = 0; pass < options.passes; ++pass) {
-    if (pass > 0) {
-      smooth_hexes(mesh, smoothing);
-      state = hex_state(mesh, hex_scaled_jacobian);
-    }
     // Features first, so that the nodes beside them are projected next to where they end.
     for (const std::size_t v : features)
       move(v, feature_point(mesh, quads[v], closest_point, v, shortest_edge(mesh, hexes[v], v)));

@@ -45,6 +45,7 @@ nlohmann::json optimisation_summary(const OptimiseStats& o) {
           {"crease_nodes", o.crease_nodes},
           {"corner_nodes", o.corner_nodes},
           {"held_off_surface", o.held_off_surface},
+          {"features_released", o.features_released},
           {"reverted", o.reverted},
           {"untangle_rounds", o.untangle_rounds},
           {"untangle_iterations", o.untangle_iterations},
@@ -79,16 +80,6 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
         {"two_boundary_faces_before", pillow.multi_boundary_hexes_before},
         {"two_boundary_faces_after", pillow.multi_boundary_hexes_after},
         {"degenerate_after", pillow.invalid_hexes_after}}},
-      {"smoothing", {{"sweeps", r.smoothing.sweeps}, {"moves", r.smoothing.moves_accepted}}},
-      {"untangling",
-       {{"sweeps", r.untangling.sweeps},
-        {"moves", r.untangling.moves_accepted},
-        {"degenerate_before", r.untangling.invalid_hexes_before},
-        {"degenerate_after", r.untangling.invalid_hexes_after},
-        {"on_surface_sweeps", r.surface_untangling.sweeps},
-        {"on_surface_moves", r.surface_untangling.moves_accepted},
-        {"on_surface_features_released", r.surface_untangling.features_released},
-        {"on_surface_degenerate_after", r.surface_untangling.invalid_hexes_after}}},
       {"refinement", refinement_summary(r.refinement)},
       {"optimisation", optimisation_summary(r.optimisation)},
       {"projection",
@@ -106,7 +97,7 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
   stages["uniform"] = stage_row(r.uniform, r.contour_seconds);
   if (r.refined) stages["refined"] = stage_row(*r.refined, r.refine_seconds);
   stages["improved"] =
-      stage_row(r.improved, r.improve_seconds + r.project_seconds + r.optimisation.seconds);
+      stage_row(r.improved, r.pillow_seconds + r.project_seconds + r.optimisation.seconds);
   return summary;
 }
 

@@ -5,10 +5,9 @@
 //   contour (dual_contouring.hpp) at octree level `level`;
 //   refine (refine.hpp) the marked nodes: the boundary layers and the box asked for;
 //   pillow (pillow.hpp): the buffer layer, so that no hex keeps two boundary faces;
-//   smooth (smoothing.hpp) and untangle (untangle.hpp) with the boundary fixed;
-//   project (project.hpp) the boundary nodes onto the surface;
-//   untangle again, the boundary nodes sliding on the surface;
-//   optimise (optimise.hpp) every free node at once, the boundary nodes on the surface.
+//   project (project.hpp) the boundary nodes onto the surface, as far as no valid hex folds;
+//   optimise (optimise.hpp) every free node at once: untangle, then raise the worst scaled
+//   Jacobian, the boundary nodes sliding on the surface.
 // Every hex of the result passes the ten corner tets; a mesh with one failing is refused.
 #include <optional>
 #include <string>
@@ -24,9 +23,7 @@
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/project.hpp"
 #include "volmesh/hexdc/refine.hpp"
-#include "volmesh/hexdc/smoothing.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
-#include "volmesh/hexdc/untangle.hpp"
 
 namespace volmesh {
 
@@ -51,18 +48,14 @@ struct HexdcResult {
   HexdcStats contouring;
   RefineStats refinement;
   PillowStats pillow;
-  SmoothingStats smoothing;
-  UntangleStats untangling;          // with the boundary fixed
   ProjectStats projection;
-  UntangleStats surface_untangling;  // with the boundary nodes on the surface
   OptimiseStats optimisation;
   // The paper's Table 1 columns: the uniform mesh, the refined one (set when the refinement
   // changed the mesh) and the final one.
   HexMeshStats uniform, improved;
   std::optional<HexMeshStats> refined;
   double contour_seconds = 0.0, refine_seconds = 0.0;
-  double improve_seconds = 0.0;  // buffer layer, smoothing and untangling
-  double project_seconds = 0.0;  // projection and untangling on the surface
+  double pillow_seconds = 0.0, project_seconds = 0.0;  // optimisation.seconds has the rest
 };
 
 // Throws InputError (naming options.source) when no sample is >= 0, for a level outside

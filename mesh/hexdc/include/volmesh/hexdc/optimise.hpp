@@ -8,17 +8,25 @@
 //     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
 //     rises (their rule), until every tet is positive and the energy settles or five rounds
 //     passed with every tet positive. A mesh already untangled skips it: the barrier trades the
-//     worst measures for less total distortion, and the optimisation raises the worst.
-//  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of the tets' scaled determinants
-//     (a corner's scaled Jacobian; an inner tet's scaled to 1 in a cube) and the sines of the
-//     boundary quads' angles (below 180°), raising the worst of them; its line search never
-//     accepts a point with a tet or a boundary quad corner that is not positive.
+//     worst measures for less total distortion, and the optimisation raises the worst. If tets
+//     are still folded, the crease and corner nodes of their hexes are released (they slide on
+//     the surface as the others do) and the untangling runs once more.
+//  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of every term of Verdict's scaled
+//     Jacobian (the eight corners and the centre's principal axes), the two inner tets (scaled
+//     to 1 in a cube) and the sines of the boundary quads' angles (below 180°), raising the
+//     worst of them, in rounds of a sharper soft minimum (β doubled each round). Its line search
+//     never accepts a point with a tet that is not positive, nor one where a centre or a
+//     boundary quad corner folds (or a folded one gets worse), nor one where a hex edge falls
+//     below 1e-3 of its hex's mean edge (the scaled measures, ratios of lengths, let two nodes
+//     meet).
 // Boundary nodes slide on the surface: they step in their tangent planes (crease nodes along
-// their crease, corner nodes not at all) and, after each untangling round and after the
-// optimisation, go back onto the surface's closest point unless that would fold a tet or lower
-// the worst measure (held_off_surface counts those). Without a surface the boundary nodes stay. The energies and gradients are
-// summed over the hexes in parallel (TBB) into per-hex slots added in hex order, so the result
-// is the same for any thread count.
+// their crease, corner nodes not at all) and, after each round, go back onto the surface's
+// closest point unless that would fold a tet or lower the worst measure (held_off_surface
+// counts those). A node is a crease or corner node when the surface's normals just beside it
+// (surface_normals_at, probed at a twentieth of its shortest edge) spread beyond the feature
+// angle: a smooth part stays smooth however coarse the mesh. Without a surface the boundary
+// nodes stay. The energies and gradients are summed over the hexes in parallel (TBB) into
+// per-hex slots added in hex order, so the result is the same for any thread count.
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/progress.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
@@ -28,9 +36,10 @@ namespace volmesh {
 struct OptimiseOptions {
   int untangle_rounds = 40;         // ε updates, each an L-BFGS run
   int untangle_iterations = 50;     // L-BFGS iterations per round
-  int quality_iterations = 300;     // L-BFGS iterations of the soft minimum
+  int quality_iterations = 150;     // L-BFGS iterations of the soft minimum, per round
   double theta = 1.0 / 128.0;       // the barrier's volume weight (Garanzha et al.'s)
-  double softmin_sharpness = 40.0;  // β of the soft minimum: weights fall by e per 1/β
+  double softmin_sharpness = 40.0;  // β of the first round: weights fall by e per 1/β
+  int sharpening_rounds = 4;        // rounds of the soft minimum, β doubled each
   // Boundary nodes whose surface normals under their quads leave their mean by more than this
   // are crease or corner nodes (as the other stages').
   double feature_angle_deg = 40.0;
@@ -45,9 +54,10 @@ struct OptimiseStats {
   double min_quality_before = 0.0, min_quality_after = 0.0;  // the least tet measure
   double min_scaled_jacobian_before = 0.0, min_scaled_jacobian_after = 0.0;  // Verdict's
   // A mesh given with every tet positive whose worst scaled Jacobian the optimisation lowered
-  // (its centre term and the quad angles are not among the tet measures) is given back as it was.
+  // (the soft minimum also weighs the inner tets and the quad angles) is given back as it was.
   bool reverted = false;
   Index boundary_nodes = 0, crease_nodes = 0, corner_nodes = 0;
+  Index features_released = 0;  // crease and corner nodes of hexes the first untangling left folded
   Index held_off_surface = 0;  // boundary nodes whose last step back onto the surface would fold a tet
   double seconds = 0.0;
 };

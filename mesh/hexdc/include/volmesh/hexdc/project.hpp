@@ -4,7 +4,7 @@
 //
 // Each boundary node (a node of mesh.boundary_faces) moves to the closest point of the surface,
 // which is a move along the surface normal there. Nodes on a crease or corner of the mesh
-// boundary (quad normals spread beyond the feature angle, as in smoothing.hpp and pillow.hpp)
+// boundary (quad normals spread beyond the feature angle, as in pillow.hpp)
 // cannot: the closest surface point of a point beside a convex edge lies on one of the two
 // faces, so projecting would round the edge off. Nor are they left where the QEF put them: its
 // crossings' normals come from central differences, which blend the two faces' near the edge,
@@ -19,11 +19,8 @@
 // half the step is tried, up to `halvings` times, and then the node stays. The floor, 0.3, is the
 // least scaled Jacobian aimed at for every hex: projection may spend quality down to it,
 // never below. Nodes are visited in index order, in `passes` passes (a neighbour's move can make
-// room for a node held back), which makes the result deterministic. Between two passes,
-// smooth_hexes at its default options and this feature angle (Laplacian interior, tangent-plane
-// boundary, features kept, no hex made worse) repairs the hexes the projection distorted; the
-// next pass takes the nodes its tangent moves lifted off a curved surface back onto it, so the
-// last word is a projection.
+// room for a node held back), which makes the result deterministic. What the guard holds back,
+// the global optimiser (optimise.hpp) takes onto the surface as it frees the hexes around.
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
 
@@ -36,7 +33,7 @@ struct ProjectOptions {
   // below what it was, if that is lower).
   double min_scaled_jacobian = 0.3;
   int halvings = 4;  // a rejected step is halved this many times before the node is kept
-  int passes = 3;    // projection passes, with a smoothing between two of them
+  int passes = 3;    // projection passes
   // A node this close to its projection, relative to the mesh's bounding-box diagonal, is on
   // the surface already.
   double tolerance = 1e-12;
