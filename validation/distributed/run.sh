@@ -154,36 +154,34 @@ print(f"\nIterations {min(its)} to {max(its)}: every level within {100 * spread:
 print("\n## Anchor: PETSc/hypre 7-point Poisson of the same size (poisson_anchor.c -stencil 7)\n")
 print("Our defaults (PMIS, threshold 0.25, W-cycles, Chebyshev), and the 7-point stencil's classical "
       "tuning (HMIS, 0.5, V-cycles, hybrid Gauss-Seidel).\n")
-print("| ranks | BoomerAMG | unknowns | iterations | assembly s | preconditioner s | solve s |")
-print("|---|---|---|---|---|---|---|")
 cost = lambda a: a["preconditioner"] + a["solve"]
-for np in (1, 2):
-    for name, a in (("ours: PMIS 0.25, W, Chebyshev", anchor[np]), ("HMIS 0.5, V, Gauss-Seidel", tuned[np])):
-        print(f"| {np} | {name} | {a['unknowns']} | {a['iterations']} | {a['assembly']:.2f} | "
-              f"{a['preconditioner']:.2f} | {a['solve']:.2f} |")
-print("\n| ranks | ours / faster anchor, preconditioner + solve | ours / faster anchor, solve only |")
-print("|---|---|---|")
-best = {np: min(anchor[np], tuned[np], key=cost) for np in (1, 2)}
-for np in (1, 2):
-    print(f"| {np} | {solver(runs[np]) / cost(best[np]):.2f} | "
-          f"{runs[np]['seconds']['solve'] / best[np]['solve']:.2f} |")
+
+
+def anchor_tables(ours_setting, tuned_setting, ratio_header):
+    """The anchor's two settings on 1 and 2 ranks, and ours against the faster; returns it."""
+    print("| ranks | BoomerAMG | unknowns | iterations | assembly s | preconditioner s | solve s |")
+    print("|---|---|---|---|---|---|---|")
+    for np in (1, 2):
+        for name, a in (("ours: PMIS 0.25, W, Chebyshev", ours_setting[np]),
+                        ("HMIS 0.5, V, Gauss-Seidel", tuned_setting[np])):
+            print(f"| {np} | {name} | {a['unknowns']} | {a['iterations']} | {a['assembly']:.2f} | "
+                  f"{a['preconditioner']:.2f} | {a['solve']:.2f} |")
+    print(f"\n| ranks | {ratio_header}, preconditioner + solve | solve only |")
+    print("|---|---|---|")
+    best = {np: min(ours_setting[np], tuned_setting[np], key=cost) for np in (1, 2)}
+    for np in (1, 2):
+        print(f"| {np} | {solver(runs[np]) / cost(best[np]):.2f} | "
+              f"{runs[np]['seconds']['solve'] / best[np]['solve']:.2f} |")
+    return best
+
+
+best = anchor_tables(anchor, tuned, "ours / faster anchor")
 print(f"\n2-rank efficiency of preconditioner + solve: ours {solver(runs[1]) / (2 * solver(runs[2])):.2f}, "
       f"the faster anchor's {cost(best[1]) / (2 * cost(best[2])):.2f}")
 q1 = {np: load(f"anchor-q1{np}") for np in (1, 2)}
 q1_tuned = {np: load(f"anchor-tuned-q1{np}") for np in (1, 2)}
 print("\n## Anchor like for like: Q1 on the box grid, the 27-point stencil (poisson_anchor.c -stencil 27)\n")
-print("| ranks | BoomerAMG | unknowns | iterations | assembly s | preconditioner s | solve s |")
-print("|---|---|---|---|---|---|---|")
-for np in (1, 2):
-    for name, a in (("ours: PMIS 0.25, W, Chebyshev", q1[np]), ("HMIS 0.5, V, Gauss-Seidel", q1_tuned[np])):
-        print(f"| {np} | {name} | {a['unknowns']} | {a['iterations']} | {a['assembly']:.2f} | "
-              f"{a['preconditioner']:.2f} | {a['solve']:.2f} |")
-print("\n| ranks | ours / faster 27-point anchor, preconditioner + solve (target 1.2) | solve only |")
-print("|---|---|---|")
-best_q1 = {np: min(q1[np], q1_tuned[np], key=cost) for np in (1, 2)}
-for np in (1, 2):
-    print(f"| {np} | {solver(runs[np]) / cost(best_q1[np]):.2f} | "
-          f"{runs[np]['seconds']['solve'] / best_q1[np]['solve']:.2f} |")
+anchor_tables(q1, q1_tuned, "ours / faster 27-point anchor (target 1.2)")
 e0 = load("elasticity0")
 print(f"\n## Elasticity: lame on builtin:thick-sphere, level {elasticity_level}, {e0['unknowns']} unknowns, "
       "1 rank, to 1e-8\n")

@@ -5,6 +5,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/validity.hpp"
+#include "volmesh/improve/json.hpp"
 
 namespace volmesh::cli {
 
@@ -12,24 +13,6 @@ namespace {
 
 std::string first_problem(const ValidityReport& r) {
   return r.problems.empty() ? std::string("see volmesh check") : r.problems.front();
-}
-
-nlohmann::json to_json(const improve::QualitySummary& q) {
-  return {{"tets", q.tets},
-          {"points", q.points},
-          {"min_dihedral_deg", q.min_dihedral_deg},
-          {"max_dihedral_deg", q.max_dihedral_deg},
-          {"tets_below_10_deg", q.below_10_degrees},
-          {"max_radius_edge", q.max_radius_edge},
-          {"min_sine", q.min_quality}};
-}
-
-nlohmann::json to_json(const improve::OperationCounts& o) {
-  return {{"smoothed", o.smoothed},           {"slid", o.slid},
-          {"flips_3_2", o.flips_3_2},         {"flips_4_4", o.flips_4_4},
-          {"edge_removals", o.edge_removals}, {"flips_2_3", o.flips_2_3},
-          {"face_removals", o.face_removals}, {"contractions", o.contractions},
-          {"insertions", o.insertions}};
 }
 
 }  // namespace
@@ -68,12 +51,9 @@ Improved improve_checked(TetMesh mesh, const TriSurface& surface, double max_sec
 }
 
 nlohmann::json improve_summary(const improve::ImproveStats& stats) {
-  return {{"before", to_json(stats.before)},
-          {"after", to_json(stats.after)},
-          {"operations", to_json(stats.operations)},
-          {"passes", stats.passes},
-          {"timed_out", stats.timed_out},
-          {"improve_seconds", stats.seconds}};
+  nlohmann::json j = improve::stats_json(stats);
+  j["improve_seconds"] = stats.seconds;
+  return j;
 }
 
 }  // namespace volmesh::cli

@@ -12,6 +12,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/improve/json.hpp"
 #include "volmesh/quality/histogram.hpp"
 #include "volmesh/quality/tet_metrics.hpp"
 #include "volmesh/surfacing/remesh.hpp"
@@ -47,31 +48,11 @@ nlohmann::json shape_of(const TetMesh& m) {
            {{"bin_deg", kDihedralBinDegrees}, {"counts", low.histogram.counts}}}};
 }
 
-nlohmann::json quality_json(const improve::QualitySummary& q) {
-  return {{"tets", q.tets},
-          {"points", q.points},
-          {"min_dihedral_deg", q.min_dihedral_deg},
-          {"max_dihedral_deg", q.max_dihedral_deg},
-          {"tets_below_10_deg", q.below_10_degrees},
-          {"max_radius_edge", q.max_radius_edge}};
-}
-
 // The improver's figures as `volmesh improve --json` names them.
 nlohmann::json improve_json(const improve::ImproveStats& s) {
-  const improve::OperationCounts& o = s.operations;
-  return {{"before", quality_json(s.before)},
-          {"after", quality_json(s.after)},
-          {"operations", {{"smoothed", o.smoothed},
-                          {"slid", o.slid},
-                          {"flips_3_2", o.flips_3_2},
-                          {"flips_4_4", o.flips_4_4},
-                          {"edge_removals", o.edge_removals},
-                          {"flips_2_3", o.flips_2_3},
-                          {"face_removals", o.face_removals},
-                          {"contractions", o.contractions},
-                          {"insertions", o.insertions}}},
-          {"passes", s.passes},
-          {"seconds", s.seconds}};
+  nlohmann::json j = improve::stats_json(s);
+  j["seconds"] = s.seconds;
+  return j;
 }
 
 // Each surface remeshed to edge h (surfacing::remesh_isotropic); the figures over all of them.

@@ -10,6 +10,7 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/improve/coarsen.hpp"
 #include "volmesh/improve/improve.hpp"
+#include "volmesh/improve/json.hpp"
 #include "volmesh/tet/directions.hpp"
 #include "volmesh/tet/projection.hpp"
 #include "volmesh/tet/rounding.hpp"
@@ -113,11 +114,8 @@ MeshResult mesh_tet_projection(const Domain& domain, const MeshRequest& request)
                                 {"points", {c.points_before, c.points_after}},
                                 {"interior_contractions", c.interior},
                                 {"boundary_contractions", c.boundary}}},
-                   {"improve", {{"tets", i.after.tets},
-                                {"min_dihedral_deg", {i.before.min_dihedral_deg, i.after.min_dihedral_deg}},
-                                {"max_dihedral_deg", {i.before.max_dihedral_deg, i.after.max_dihedral_deg}},
-                                {"passes", i.passes},
-                                {"seconds", i.seconds}}}};
+                   {"improve", improve::stats_json(i)}};
+    improvement["improve"]["seconds"] = i.seconds;
   }
   drop_cavities(tets, surfaces);
   MeshResult r;
