@@ -106,6 +106,11 @@ TEST(CliStudy, StaircaseSeriesOnTheBall) {
 // Q1 on hexdc meshes of the ball, their boundary nodes projected onto the true sphere: second
 // order in L2 (at least 1.8).
 TEST(CliStudy, HexdcIsSecondOrderOnTheBall) {
+#ifdef __SANITIZE_ADDRESS__
+  // Three levels of hexdc's global optimisation take over the 600 s limit under the
+  // sanitizers; hexdc's own unit tests run there, and this slope in the Release suite.
+  GTEST_SKIP() << "a convergence study of hexdc: Release suite only";
+#endif
   const fs::path dir = test::scratch_dir("study-hexdc");
   const auto r = run_volmesh("study convergence --problem sine --method hexdc --levels 3..5 "
                              "--json -o " + (dir / "out").string(), dir);
