@@ -21,6 +21,7 @@
 #                                 off TetGen's by more than 1.5x (default 1)
 #   TETFRONT_SIZE_FROM=volume     ours at the edge of the regular tet of TetGen's mean tet
 #                                 volume, no rerun (default: the mean edge, then matched)
+#   TETFRONT_INTERIOR=delaunay|front         ours' --interior (default: tet-front's own)
 #   TETFRONT_SWEEP="all" | "NAME ..."        the sweep's surfaces (default all)
 #   TETFRONT_SWEEP_TIMEOUT=S      per sweep run (default 120)
 #   TETFRONT_KEEP_MESHES=1        keep the .vtu files (default: deleted once checked)
@@ -42,6 +43,7 @@ TIMEOUT=${TETFRONT_TIMEOUT:-300}
 SIZES=${TETFRONT_SIZES:-}
 MATCH_PASSES=${TETFRONT_MATCH_PASSES:-1}
 SIZE_FROM=${TETFRONT_SIZE_FROM:-edge}
+INTERIOR=${TETFRONT_INTERIOR:-}
 SWEEP=${TETFRONT_SWEEP:-all}
 SWEEP_TIMEOUT=${TETFRONT_SWEEP_TIMEOUT:-120}
 KEEP=${TETFRONT_KEEP_MESHES:-0}
@@ -90,7 +92,8 @@ ours() {  # name domain size seconds
   local mesh=$OUT/$1.vtu
   rm -f "$mesh"
   echo "$3" > "$OUT/$1.size"
-  timed "$1" "$4" "$VOLMESH" mesh tet-front "$2" --size "$3" -o "$mesh" --json -q
+  timed "$1" "$4" "$VOLMESH" mesh tet-front "$2" --size "$3" ${INTERIOR:+--interior "$INTERIOR"} \
+    -o "$mesh" --json -q
   check "$1" "$mesh"
 }
 

@@ -28,6 +28,11 @@ constexpr double kDihedralBinDegrees = 10.0;
 constexpr int kDihedralBins = 9;
 constexpr int kMinAuxRatio = 2, kMaxAuxRatio = 40;
 
+// --interior's values, by FrontOptions::Interior.
+std::string interior_name(tet::Interior interior) {
+  return interior == tet::Interior::delaunay ? "delaunay" : "front";
+}
+
 nlohmann::json shape_of(const TetMesh& m) {
   std::vector<double> min_dihedral, max_dihedral, radius_edge;
   for (const auto& c : m.cells) {
@@ -80,6 +85,9 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   if (const auto n = given<std::int64_t>(request.options, "aux-ratio"))
     options.aux_ratio = static_cast<int>(*n);
   if (const auto k = given<std::int64_t>(request.options, "stop-after")) options.stop_after = *k;
+  if (const auto i = given<std::string>(request.options, "interior"))
+    options.interior = *i == interior_name(tet::Interior::delaunay) ? tet::Interior::delaunay
+                                                                    : tet::Interior::front;
   // Before the boundary is triangulated at h: the domain's box holds the boundary's.
   const Box3 box = domain.bounds();
   tet::require_front_size(request.domain_name, size, options.aux_ratio, box.lo, box.hi);
@@ -126,6 +134,9 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
                {"nodes", front.mesh.num_points()},
                {"aux_ratio", options.aux_ratio},
                {"boundary", boundary_json},
+               {"interior", {{"method", interior_name(options.interior)},
+                             {"core_points", s.core_points},
+                             {"core_tets", s.core_tets}}},
                {"front", {{"tets", s.front_tets},
                           {"new_nodes", s.new_nodes},
                           {"existing_node_tets", s.existing_node_tets},
@@ -158,6 +169,14 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::integer,
                  .min = kMinAuxRatio,
                  .max = kMaxAuxRatio},
+                {.name = "interior",
+                 .help = "how each region's inside is filled: delaunay (the Delaunay tets of "
+                         "a body-centred cubic lattice, the front only in the layer around "
+                         "them) or front (the front throughout; default " +
+                         interior_name(tet::FrontOptions{}.interior) + ")",
+                 .type = OptionSpec::Type::choice,
+                 .choices = {interior_name(tet::Interior::delaunay),
+                             interior_name(tet::Interior::front)}},
                 {.name = "remesh-surface",
                  .help = "remesh the boundary to edge h first (isotropic, sharp edges kept); "
                          "--json gives the Hausdorff distance to the input",

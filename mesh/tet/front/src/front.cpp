@@ -9,6 +9,7 @@
 
 #include "advance.hpp"
 #include "aux_grid.hpp"
+#include "delaunay_core.hpp"
 #include "fallback.hpp"
 #include "nesting.hpp"
 #include "volmesh/core/errors.hpp"
@@ -53,6 +54,22 @@ improve::ImproveStats improve_front_mesh(TetMesh& m, const std::vector<Projectio
   options.slides = improve::slides_on_surface(m, outer_boundary(surfaces));
   options.progress = progress;
   return improve::improve_tet_mesh(m, options);
+}
+
+// The region's Delaunay core into the mesh, its tets labelled `label`, and its boundary into
+// the region's front `faces` (facing away from the core). The core is a hole in the region as
+// the front sees it: the front's auxiliary points inside the core's boundary are never alive.
+void add_core(TetMesh& m, std::vector<Tri>& faces, Index label, double h,
+              const Progress& progress, FrontStats& stats) {
+  const front::Core core = front::delaunay_core(m.points, faces, h, progress);
+  const Index first = m.num_points();
+  m.points.insert(m.points.end(), core.points.begin(), core.points.end());
+  for (const auto& t : core.tets)
+    m.cells.push_back({first + t[0], first + t[1], first + t[2], first + t[3]});
+  m.cell_region.insert(m.cell_region.end(), core.tets.size(), label);
+  for (const Tri& t : core.faces) faces.push_back({first + t[0], first + t[1], first + t[2]});
+  stats.core_points += static_cast<long long>(core.points.size());
+  stats.core_tets += static_cast<long long>(core.tets.size());
 }
 
 std::string text(double x) {
@@ -114,7 +131,7 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
   }
   const std::vector<Index> parent = front::parents(m.points, outward);
   const double front_share = options.improve ? 1.0 - kImproveShare : 1.0;
-  double front_seconds = 0.0, fallback_seconds = 0.0;
+  double interior_seconds = 0.0, front_seconds = 0.0, fallback_seconds = 0.0;
   std::vector<std::vector<Tri>> cavities(surfaces.size());
   // Tets are labelled by their surface's index until the end (improve_front_mesh).
   for (std::size_t s = 0; s < surfaces.size(); ++s) {
@@ -125,10 +142,14 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
       if (parent[c] == static_cast<Index>(s))
         faces.insert(faces.end(), outward[c].begin(), outward[c].end());
     const double begin = front_share * double(s) / double(surfaces.size());
-    front::RegionFront region = front::advance_front(
-        m.points, faces, options,
-        part_of(progress, begin, begin + front_share / double(surfaces.size()),
-                surfaces[s].name + ": "));
+    const Progress part = part_of(progress, begin, begin + front_share / double(surfaces.size()),
+                                  surfaces[s].name + ": ");
+    if (options.interior == Interior::delaunay) {
+      add_core(m, faces, static_cast<Index>(s), options.size, part, r.stats);
+      interior_seconds += seconds_since(clock);
+    }
+    const auto front_clock = Clock::now();
+    front::RegionFront region = front::advance_front(m.points, faces, options, part);
     r.stats.front_tets += static_cast<long long>(region.tets.size());
     r.stats.new_nodes += region.new_nodes;
     r.stats.existing_node_tets += region.existing_node_tets;
@@ -138,7 +159,7 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     m.cells.insert(m.cells.end(), region.tets.begin(), region.tets.end());
     m.cell_region.insert(m.cell_region.end(), region.tets.size(), static_cast<Index>(s));
     cavities[s] = std::move(region.cavity);
-    front_seconds += seconds_since(clock);
+    front_seconds += seconds_since(front_clock);
   }
   // The cavities are closed once every front has stopped: closing one may cut faces and
   // edges of any region's tets, of the surfaces and of the cavities still open.
@@ -170,7 +191,8 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
   for (Index& region : m.cell_region) region = surfaces[region].label;
   r.stats.tets = m.num_cells();
   r.stats.nodes = m.num_points();
-  r.stats.seconds = {{"front", front_seconds}, {"fallback", fallback_seconds}};
+  r.stats.seconds = {
+      {"interior", interior_seconds}, {"front", front_seconds}, {"fallback", fallback_seconds}};
   return r;
 }
 

@@ -24,6 +24,10 @@
 // Last, the mesh improver (volmesh/improve) raises its worst tets, the input triangles and the
 // surfaces between regions kept (the fallback's points inside outer input triangles or on
 // their edges may slide within them).
+// With FrontOptions::Interior::delaunay, each region first gets a core: the Delaunay tets of a
+// body-centred cubic lattice of edge about h at least h inside it (congruent tets, dihedral
+// angles 60° and 90°); the front starts from the region's triangles and the core's boundary,
+// and meshes only the layer between them.
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,23 +41,30 @@ namespace volmesh::tet {
 
 inline constexpr int kDefaultAuxRatio = 12;
 
+// How each region's inside is filled: a Delaunay core and the front in the layer around it,
+// or the front throughout.
+enum class Interior { delaunay, front };
+
 struct FrontOptions {
   double size = 0.0;                // h, the target edge
   int aux_ratio = kDefaultAuxRatio;  // n: auxiliary points at h / n
   // A test hook: the front stops after this many tets per region, as if it stalled (-1: never).
   long long stop_after = -1;
   bool improve = true;  // improve the finished mesh (volmesh/improve/improve.hpp)
+  Interior interior = Interior::front;
 };
 
 struct FrontStats {
   long long tets = 0, nodes = 0;
+  long long core_points = 0, core_tets = 0;  // the Delaunay interior's (Interior::delaunay)
   long long front_tets = 0;     // made by the advancing front
   long long new_nodes = 0;      // placed by the front (beyond the surface points)
   long long existing_node_tets = 0;  // tets whose fourth corner was already a front node
   // Of those, tets that passed the exact tests only (beyond Vmax or over deleted auxiliary
   // points), tried before a face counts as failed.
   long long relaxed_tets = 0;
-  long long aux_points = 0, aux_deleted = 0;  // live inside the regions at the start; deleted
+  // Live inside the regions (outside their cores) at the start; deleted.
+  long long aux_points = 0, aux_deleted = 0;
   long long stalls = 0;         // regions whose front could not advance further
   long long fallback_tets = 0;  // tets that close the stalled cavities
   long long cavity_faces = 0;   // front faces left by the stalls
@@ -67,7 +78,7 @@ struct FrontStats {
   long long split_boundary_faces = 0;
   long long steiner_points = 0;
   ::volmesh::improve::ImproveStats improve;  // the last pass (empty when FrontOptions::improve is off)
-  // Seconds by stage: front, fallback.
+  // Seconds by stage: interior, front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
 };
 
