@@ -46,6 +46,8 @@ std::vector<Case> cases(const fs::path& dir) {
   const std::string d = dir.string(), cube = std::string(VOLMESH_TEST_DATA) + "/surfaces/cube.obj";
   return {
       {"mesh cutcell builtin:ball --level 3 -o " + d + "/ball.vtu", "cutcell: octree"},
+      {"mesh tet-front builtin:ball --size 0.4 --interior delaunay -o " + d + "/front.vtu",
+       "tet-front: sphere: building the Delaunay"},
       {"solve poisson --problem sine --method staircase --level 3 -o " + d + "/u.vtu",
        "solve: meshing: octree"},
       {"study convergence --problem sine --method grid --levels 1..2 -o " + d + "/study",
