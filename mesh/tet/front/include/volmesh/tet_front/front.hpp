@@ -83,8 +83,9 @@ struct FrontStats {
 };
 
 struct FrontResult {
-  // Points: the surfaces' points in their order, then the new nodes. Boundary faces: the
-  // outermost surfaces' triangles, tagged by surface.
+  // Points: the surfaces' points in their order, then the new nodes (with Interior::delaunay,
+  // each region's core points before its front's). Boundary faces: the outermost surfaces'
+  // triangles, tagged by surface.
   TetMesh mesh;
   FrontStats stats;
 };
