@@ -33,7 +33,8 @@ HERE=$ROOT/validation/tetfront
 OCTREE=$ROOT/validation/octree
 # shellcheck disable=SC2034  # BUILD is read by setup.sh
 BUILD=${VALIDATION_BUILD:-$ROOT/build/release}
-RESULTS=${TETFRONT_RESULTS:-$ROOT/build/validation-tetfront}
+# Absolute: the Gmsh .geo files name the STL beside them by this path.
+RESULTS=$(realpath -m "${TETFRONT_RESULTS:-$ROOT/build/validation-tetfront}")
 OUT=$RESULTS/out
 PY=/usr/bin/python3  # the Debian python, which has meshio, numpy and netgen
 
