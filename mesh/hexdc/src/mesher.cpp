@@ -75,6 +75,7 @@ HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
   if (options.crease_layer) project.pinned = &r.feature_layer.pinned;
   r.projection = project_boundary(r.mesh, surface, project);
   r.project_seconds = seconds_since(projecting);
+  r.capture_projected = crease_capture(r.mesh, options.features, r.feature_layer.chains);
   // Every free node at once: untangled if a tet is folded, then the worst corners and boundary
   // quad angles raised, the boundary nodes sliding on the surface.
   report(options.progress, "optimisation", kOptimiseStart);

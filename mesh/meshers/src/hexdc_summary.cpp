@@ -69,6 +69,7 @@ nlohmann::json features_summary(const HexdcResult& r) {
   for (const FeatureChain& chain : r.feature_layer.chains) chain_edges += chain.nodes.size() - 1;
   return {{"creases", r.capture.creases},
           {"creases_captured", r.capture.captured},
+          {"creases_captured_after_projection", r.capture_projected.captured},
           {"max_crease_distance_per_edge", r.capture.max_relative_distance},
           {"chains", r.feature_layer.chains.size()},
           {"chain_edges", chain_edges},

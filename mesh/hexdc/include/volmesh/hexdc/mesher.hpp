@@ -63,6 +63,7 @@ struct HexdcResult {
   OptimiseStats optimisation;
   FeatureLayer feature_layer;  // its chains' nodes on the final mesh
   CaptureStats capture;        // of options.features by the final mesh
+  CaptureStats capture_projected;  // the same after the projection, before the optimiser
   // The paper's Table 1 columns: the uniform mesh, the refined one (set when the refinement
   // changed the mesh) and the final one.
   HexMeshStats uniform, improved;
