@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tangent_point.hpp"
+#include "volmesh/core/feature_angle.hpp"
 #include "volmesh/core/types.hpp"
 
 namespace volmesh::cutcell {
@@ -40,7 +41,7 @@ struct FaceContourOptions {
   // false: M3C as published (Wu & Sullivan): the face interface point at the face centre,
   // no feature points; the edge points are then edge midpoints, given by the caller.
   bool exact_points = true;
-  double feature_theta = 0.9;  // sharp when the tangents' cosine is below (CMS, Fig. 4b)
+  double feature_theta = kFeatureCosine;  // sharp when the tangents' cosine is below (CMS, Fig. 4b)
   // Face points keep margin * side away from the sides. A face interface point found nearer
   // a side, or outside by less than reach * side, lands on that side's edge point when
   // there is one within reach, or is pushed in; farther out it has left the face.

@@ -60,21 +60,30 @@ HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
   // The buffer layer takes every hex off the boundary but one face.
   report(options.progress, "buffer layer", kPillowStart);
   const Clock::time_point pillowing = Clock::now();
-  r.pillow = pillow_boundary(r.mesh);
+  PillowOptions pillow;
+  if (!options.features.creases.empty() || !options.features.corners.empty())
+    pillow.features = &options.features;
+  pillow.follow_features = options.crease_layer;
+  r.pillow = pillow_boundary(r.mesh, pillow, &r.feature_layer);
   r.pillow_seconds = seconds_since(pillowing);
 
   // The paper's boundary refinement: boundary nodes onto the TRUE boundary, crease and corner
   // nodes onto their features, as far as no valid hex folds.
   report(options.progress, "projection", kProjectStart);
   const Clock::time_point projecting = Clock::now();
-  r.projection = project_boundary(r.mesh, surface);
+  ProjectOptions project;
+  if (options.crease_layer) project.pinned = &r.feature_layer.pinned;
+  r.projection = project_boundary(r.mesh, surface, project);
   r.project_seconds = seconds_since(projecting);
+  r.capture_projected = crease_capture(r.mesh, options.features, r.feature_layer.chains);
   // Every free node at once: untangled if a tet is folded, then the worst corners and boundary
   // quad angles raised, the boundary nodes sliding on the surface.
   report(options.progress, "optimisation", kOptimiseStart);
   OptimiseOptions optimise;
   optimise.progress = part_of(options.progress, kOptimiseStart, kCheckStart);
+  if (options.crease_layer) optimise.feature_angle_deg = 0.5 * options.feature_angle_deg;
   r.optimisation = optimise_hexes(r.mesh, surface, optimise);
+  r.capture = crease_capture(r.mesh, options.features, r.feature_layer.chains);
 
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
   report(options.progress, "corner tets", kCheckStart);

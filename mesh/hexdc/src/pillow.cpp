@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numbers>
+#include <utility>
 
 #include "hex_mesh_geometry.hpp"
+#include "quad_faces.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/hexdc/hex_quality.hpp"
 
@@ -14,28 +15,6 @@ namespace volmesh {
 namespace {
 
 using namespace hexdc_detail;
-using QuadKey = std::array<Index, 4>;
-
-QuadKey sorted_key(std::array<Index, 4> quad) {
-  std::sort(quad.begin(), quad.end());
-  return quad;
-}
-
-// Each boundary quad's hex: the one having a face on the quad's four nodes (-1 if none).
-std::vector<Index> quad_owners(const HexMesh& mesh) {
-  std::map<QuadKey, Index> index;
-  for (std::size_t q = 0; q < mesh.boundary_faces.size(); ++q)
-    index.emplace(sorted_key(mesh.boundary_faces[q]), static_cast<Index>(q));
-  std::vector<Index> owner(mesh.boundary_faces.size(), -1);
-  for (Index h = 0; h < mesh.num_cells(); ++h)
-    for (const auto& face : kHexFaces) {
-      const auto& cell = mesh.cells[static_cast<std::size_t>(h)];
-      const auto it =
-          index.find(sorted_key({cell[face[0]], cell[face[1]], cell[face[2]], cell[face[3]]}));
-      if (it != index.end()) owner[static_cast<std::size_t>(it->second)] = h;
-    }
-  return owner;
-}
 
 Index multi_boundary_hexes(const HexMesh& mesh) {
   std::vector<int> faces(mesh.cells.size(), 0);
@@ -142,13 +121,15 @@ std::vector<bool> shrink_failing_copies(HexMesh& mesh, Copies& copies, Index fir
 
 }  // namespace
 
-PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options) {
+PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options, FeatureLayer* layer) {
   if (!(options.offset_fraction > 0.0 && options.offset_fraction < 1.0))
     throw InputError("pillow_boundary: the offset fraction must lie in (0, 1)");
   if (options.halvings < 0) throw InputError("pillow_boundary: halvings must not be negative");
   const double cos_feature = feature_cosine("pillow_boundary", options.feature_angle_deg);
   PillowStats stats;
   if (mesh.cells.empty()) return stats;
+  FeatureLayer features;
+  if (options.features != nullptr) features = chain_features(mesh, *options.features);
   const Quality before = quality(mesh);
   stats.invalid_hexes_before = before.invalid;
   stats.min_scaled_jacobian_before = before.min_scaled_jacobian;
@@ -181,6 +162,8 @@ PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options) {
   stats.pillow_hexes = static_cast<Index>(mesh.boundary_faces.size());
 
   const std::vector<bool> shrunk = shrink_failing_copies(mesh, copies, first_copy, options);
+  if (options.features != nullptr && options.follow_features) pillow_patches(mesh, features);
+  if (layer != nullptr) *layer = std::move(features);
   const Quality after = quality(mesh);
   stats.shrunk_copies = static_cast<Index>(std::count(shrunk.begin(), shrunk.end(), true));
   stats.invalid_hexes_after = after.invalid;

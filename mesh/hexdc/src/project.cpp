@@ -33,11 +33,19 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
   }
   const double on_surface = options.tolerance * (hi - lo).norm();
 
+  std::vector<char> pinned(mesh.points.size(), 0);
+  const std::vector<PinnedNode> no_pins;
+  const std::vector<PinnedNode>& pins = options.pinned != nullptr ? *options.pinned : no_pins;
+  for (const PinnedNode& pin : pins) pinned[static_cast<std::size_t>(pin.node)] = 1;
   // The nodes to project and the feature nodes, in index order.
   std::vector<std::size_t> movable, features;
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (quads[v].empty() || hexes[v].empty()) continue;
     ++stats.boundary_nodes;
+    if (pinned[v]) {
+      ++stats.pinned_nodes;
+      continue;
+    }
     if (on_feature(mesh, quads[v], cos_feature)) {
       features.push_back(v);
       continue;
@@ -53,19 +61,23 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
   stats.invalid_hexes_before = invalid_count(state);
   std::vector<std::size_t> first_judged(mesh.points.size(), 0);  // guarded_move's `first`
   std::vector<HexGrade> trial;
-  const auto move = [&](std::size_t v, const Vec3& target) {
+  const auto move = [&](std::size_t v, const Vec3& target, double floor) {
     Vec3 step = target - mesh.points[v];
     if (step.norm() <= on_surface) return;
     for (int k = 0; k <= options.halvings; ++k, step *= 0.5)
-      if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, options.min_scaled_jacobian,
-                       state, first_judged[v], trial))
+      if (guarded_move(mesh, hexes[v], v, mesh.points[v] + step, floor, state, first_judged[v],
+                       trial))
         return;
   };
   for (int pass = 0; pass < options.passes; ++pass) {
-    // Features first, so that the nodes beside them are projected next to where they end.
+    // Pinned nodes and features first, so that the nodes beside them are projected next to
+    // where they end.
+    for (const PinnedNode& pin : pins) move(static_cast<std::size_t>(pin.node), pin.target, options.pinned_min_scaled_jacobian);
     for (const std::size_t v : features)
-      move(v, feature_point(mesh, quads[v], closest_point, v, shortest_edge(mesh, hexes[v], v)));
-    for (const std::size_t v : movable) move(v, closest_point(mesh.points[v]));
+      move(v, feature_point(mesh, quads[v], closest_point, v, shortest_edge(mesh, hexes[v], v)),
+           options.min_scaled_jacobian);
+    for (const std::size_t v : movable)
+      move(v, closest_point(mesh.points[v]), options.min_scaled_jacobian);
   }
 
   for (const std::size_t v : movable) {
@@ -74,10 +86,12 @@ ProjectStats project_boundary(HexMesh& mesh, const SurfaceProjector& closest_poi
     ++stats.held_back;
     stats.max_distance_left = std::max(stats.max_distance_left, distance);
   }
+  for (const PinnedNode& pin : pins)
+    if ((mesh.points[static_cast<std::size_t>(pin.node)] - pin.target).norm() > on_surface) ++stats.pinned_held_back;
   for (const std::size_t v : features)
     stats.max_feature_distance = std::max(
         stats.max_feature_distance, (closest_point(mesh.points[v]) - mesh.points[v]).norm());
-  stats.projected = stats.boundary_nodes - stats.feature_nodes - stats.held_back;
+  stats.projected = stats.boundary_nodes - stats.pinned_nodes - stats.feature_nodes - stats.held_back;
   stats.min_scaled_jacobian_after = least_quality(state);
   stats.invalid_hexes_after = invalid_count(state);
   return stats;

@@ -16,6 +16,7 @@
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/domain/grid.hpp"
 #include "volmesh/domain/grid_sdf.hpp"
+#include "volmesh/hexdc/features.hpp"
 #include "volmesh/hexdc/mesher.hpp"
 
 namespace volmesh::meshers {
@@ -91,16 +92,25 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                      request.domain_name + " allows: " + std::to_string((Index{1} << depth) + 1) +
                      " samples per axis (k = " + std::to_string(depth) +
                      ") give at most --level " + std::to_string(depth));
-  const HexdcOptions options{.level = level,
-                             .refinement = refinement_of(request.options),
-                             .source = request.domain_name,
-                             .progress = part_of(request.progress, kFieldShare, 1.0)};
+  HexdcOptions options;
+  options.level = level;
+  options.refinement = refinement_of(request.options);
+  options.source = request.domain_name;
+  options.progress = part_of(request.progress, kFieldShare, 1.0);
+  if (const auto angle = given<double>(request.options, "feature-angle"))
+    options.feature_angle_deg = *angle;
+  options.crease_layer = given<bool>(request.options, "crease-layer").value_or(false);
 
   report(request.progress, "signed distances", 0.0);
   const Clock::time_point sampling = Clock::now();
   const std::shared_ptr<const SignedDistance> outer = outer_surface_distance(domain);
   const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level), outer.get());
   const double field_seconds = seconds_since(sampling);
+  // The creases and corners of a surface domain's outer surface; an analytic or sampled domain
+  // has no triangles to find them on.
+  if (const auto* surfaces = dynamic_cast<const SurfaceDomain*>(&domain); outer != nullptr)
+    options.features = sharp_features(surfaces->surface(outermost_surface(*surfaces)),
+                                      options.feature_angle_deg);
 
   const HexdcResult hexes = hexdc_mesh(field, hexdc_surface(domain, outer), options);
   MeshResult r;
@@ -130,6 +140,18 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::integer,
                  .min = 0,
                  .max = kMaxRefineLayers},
+                {.name = "feature-angle",
+                 .help = "a bend of the surface sharper than this many degrees is a crease, "
+                         "measured in --json (default " +
+                         std::to_string(feature_angle_degrees()).substr(0, 4) + ", as cutcell's)",
+                 .type = OptionSpec::Type::real,
+                 .min = 1.0,
+                 .max = 90.0},
+                {.name = "crease-layer",
+                 .help = "make the buffer layer follow the creases: each a chain of hex edges, "
+                         "the faces between them pillowed again (more creases on hex edges, "
+                         "twice the layer's hexes, a lower worst scaled Jacobian)",
+                 .type = OptionSpec::Type::flag},
                 {.name = "refine-box",
                  .help = "x0,y0,z0,x1,y1,z1: mark the nodes inside this box for refinement too "
                          "(hexes with every corner marked split into 27)",

@@ -63,6 +63,21 @@ nlohmann::json optimisation_summary(const OptimiseStats& o) {
           {"seconds", o.seconds}};
 }
 
+// The input's creases and corners and how the buffer layer follows them (features.hpp).
+nlohmann::json features_summary(const HexdcResult& r) {
+  std::size_t chain_edges = 0;
+  for (const FeatureChain& chain : r.feature_layer.chains) chain_edges += chain.nodes.size() - 1;
+  return {{"creases", r.capture.creases},
+          {"creases_captured", r.capture.captured},
+          {"creases_captured_after_projection", r.capture_projected.captured},
+          {"max_crease_distance_per_edge", r.capture.max_relative_distance},
+          {"chains", r.feature_layer.chains.size()},
+          {"chain_edges", chain_edges},
+          {"pinned_nodes", r.feature_layer.pinned.size()},
+          {"patches_pillowed", r.feature_layer.patches_pillowed},
+          {"strip_hexes", r.feature_layer.strip_hexes}};
+}
+
 }  // namespace
 
 nlohmann::json hexdc_summary(const HexdcResult& r) {
@@ -92,6 +107,7 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
         {"min_scaled_jacobian_before", projection.min_scaled_jacobian_before},
         {"min_scaled_jacobian_after", projection.min_scaled_jacobian_after},
         {"seconds", r.project_seconds}}}};
+  summary["features"] = features_summary(r);
   // The paper's Table 1 columns: uniform, refined (when asked), improved.
   nlohmann::json& stages = summary["stages"];
   stages["uniform"] = stage_row(r.uniform, r.contour_seconds);

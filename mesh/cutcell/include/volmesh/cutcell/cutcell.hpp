@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "volmesh/core/feature_angle.hpp"
 #include "volmesh/core/poly_mesh.hpp"
 #include "volmesh/domain/domain.hpp"
 #include "volmesh/octree/octree.hpp"
@@ -48,7 +49,7 @@ struct CutcellOptions {
   // cells, in at most merge_rounds passes (0: never). No point moves.
   int merge_rounds = 16;
   double merge_volume_ratio = 1e-3;
-  double feature_theta = 0.9;  // Kobbelt's sharp-feature thresholds
+  double feature_theta = kFeatureCosine;  // Kobbelt's sharp-feature thresholds
   double feature_phi = 0.7;
   // Called with a stage name and the fraction of the run done, from the calling thread.
   std::function<void(const std::string& stage, double fraction)> progress;

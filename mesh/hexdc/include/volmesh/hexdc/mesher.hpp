@@ -15,9 +15,11 @@
 #include <Eigen/Geometry>
 
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/core/feature_angle.hpp"
 #include "volmesh/core/progress.hpp"
 #include "volmesh/core/voxel_grid.hpp"
 #include "volmesh/hexdc/dual_contouring.hpp"
+#include "volmesh/hexdc/features.hpp"
 #include "volmesh/hexdc/hex_mesh_stats.hpp"
 #include "volmesh/hexdc/optimise.hpp"
 #include "volmesh/hexdc/pillow.hpp"
@@ -40,6 +42,15 @@ struct HexdcOptions {
   int level = 0;  // the octree level contoured, in [1, k] for a (2^k + 1)^3 field
   HexdcRefinement refinement;
   std::string source;  // names the field in messages (a file name, "builtin:ball")
+  // The surface's sharp features (sharp_features at feature_angle_deg); empty when the domain
+  // has no triangles. Their chains on the boundary are always found and their capture measured;
+  // with crease_layer the buffer layer follows them (feature_layer.hpp), its chain and corner
+  // nodes are moved onto them first in the projection, and the optimiser keeps a node on a
+  // crease when its normals leave their mean by half the angle (the two faces' normals are the
+  // angle apart).
+  SurfaceFeatures features;
+  double feature_angle_deg = feature_angle_degrees();
+  bool crease_layer = false;
   Progress progress;   // the stages, from the calling thread
 };
 
@@ -50,6 +61,9 @@ struct HexdcResult {
   PillowStats pillow;
   ProjectStats projection;
   OptimiseStats optimisation;
+  FeatureLayer feature_layer;  // its chains' nodes on the final mesh
+  CaptureStats capture;        // of options.features by the final mesh
+  CaptureStats capture_projected;  // the same after the projection, before the optimiser
   // The paper's Table 1 columns: the uniform mesh, the refined one (set when the refinement
   // changed the mesh) and the final one.
   HexMeshStats uniform, improved;

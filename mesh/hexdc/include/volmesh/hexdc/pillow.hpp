@@ -16,7 +16,12 @@
 // curved quad fails sooner); what still fails is counted in invalid_hexes_after. Hexes failing
 // before are not unfolded by the layer alone: smoothing after it can, now that they are off the
 // boundary.
+//
+// Given the input's sharp features, the layer can follow them (feature_layer.hpp): chains of
+// boundary edges along the creases and nodes on the corners before the copies are made, and the
+// patches between chains pillowed once more after.
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/hexdc/feature_layer.hpp"
 
 namespace volmesh {
 
@@ -28,6 +33,10 @@ struct PillowOptions {
   // Boundary nodes whose quad normals leave their mean by more than this are creases or corners: as
   // SmoothingOptions' feature angle.
   double feature_angle_deg = 40.0;
+  // The input's creases and corners, if known: their chains (feature_layer.hpp) are found before
+  // the copies are made, and with follow_features the patches between them pillowed again.
+  const SurfaceFeatures* features = nullptr;
+  bool follow_features = false;
 };
 
 struct PillowStats {
@@ -44,6 +53,8 @@ struct PillowStats {
 // Adds the layer in place; mesh.boundary_faces and their tags are kept, the new hexes take the
 // region of the hex behind their quad. An empty mesh is left as it is. Throws InputError for an
 // offset fraction outside (0, 1), negative halvings or a feature angle outside [0, 180] degrees.
-PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options = {});
+// With options.features, `layer` (if given) receives the chains and the pinned nodes.
+PillowStats pillow_boundary(HexMesh& mesh, const PillowOptions& options = {},
+                            FeatureLayer* layer = nullptr);
 
 }  // namespace volmesh

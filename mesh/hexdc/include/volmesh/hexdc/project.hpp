@@ -21,7 +21,10 @@
 // never below. Nodes are visited in index order, in `passes` passes (a neighbour's move can make
 // room for a node held back), which makes the result deterministic. What the guard holds back,
 // the global optimiser (optimise.hpp) takes onto the surface as it frees the hexes around.
+#include <vector>
+
 #include "volmesh/core/element_mesh.hpp"
+#include "volmesh/hexdc/feature_layer.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
 
 namespace volmesh {
@@ -37,12 +40,19 @@ struct ProjectOptions {
   // A node this close to its projection, relative to the mesh's bounding-box diagonal, is on
   // the surface already.
   double tolerance = 1e-12;
+  // Nodes the buffer layer chose for the input's creases and corners (feature_layer.hpp): moved
+  // to their targets first in each pass, guarded with this floor instead: a crease through a
+  // quad's corner costs that corner its angle until the optimiser spreads it.
+  const std::vector<PinnedNode>* pinned = nullptr;
+  double pinned_min_scaled_jacobian = 0.0;
 };
 
 struct ProjectStats {
   Index boundary_nodes = 0;
   Index projected = 0;      // non-feature nodes that end on the surface
   Index feature_nodes = 0;  // crease and corner nodes, moved onto the feature
+  Index pinned_nodes = 0;   // ProjectOptions::pinned
+  Index pinned_held_back = 0;  // of those, left off their targets
   Index held_back = 0;      // non-feature nodes left off the surface (by the quality guard)
   double max_distance_before = 0.0;   // over the non-feature nodes, to their projection
   double max_distance_left = 0.0;     // the same after: over the held-back nodes
