@@ -83,6 +83,10 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   // Before the boundary is triangulated at h: the domain's box holds the boundary's.
   const Box3 box = domain.bounds();
   tet::require_front_size(request.domain_name, size, options.aux_ratio, box.lo, box.hi);
+  if (const auto interior = given<double>(request.options, "interior-size")) {
+    options.interior_size = *interior;
+    tet::require_front_interior_size(request.domain_name, *interior, size, box.lo, box.hi);
+  }
   report(request.progress, "triangulating the boundary", 0.0);
   BoundarySurfaces boundary = triangulated_surfaces(domain, request.domain_name, kMethod, size);
   std::vector<tet::ProjectionSurface>& surfaces = boundary.surfaces;
@@ -125,6 +129,9 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   r.summary = {{"tets", front.mesh.num_cells()},
                {"nodes", front.mesh.num_points()},
                {"aux_ratio", options.aux_ratio},
+               {"size_field", {{"min", s.size_min},
+                               {"max", s.size_max},
+                               {"grading_rate", s.grading_rate}}},
                {"boundary", boundary_json},
                {"front", {{"tets", s.front_tets},
                           {"new_nodes", s.new_nodes},
@@ -158,6 +165,12 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::integer,
                  .min = kMinAuxRatio,
                  .max = kMaxAuxRatio},
+                {.name = "interior-size",
+                 .help = "graded sizes: grow the size inward from the boundary's past h up to H "
+                         "(at least h, at most the bounding-box diagonal)",
+                 .type = OptionSpec::Type::real,
+                 .min = 0.0,
+                 .max = 1e300},
                 {.name = "remesh-surface",
                  .help = "remesh the boundary to edge h first (isotropic, sharp edges kept); "
                          "--json gives the Hausdorff distance to the input",

@@ -71,7 +71,7 @@ TEST_P(StoppedFront, IsClosedByRefiningAroundTheCutFaces) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, StoppedFront,
-                         testing::Values(Case{"tripod.off", 0.5, 20}));
+                         testing::Values(Case{"tripod.off", 0.3, 10}));
 
 // The paper's example stopped early: the outer region's cavity has the inner cube as a hole,
 // which the projection takes outward from the hole. Both regions close conformingly, with
