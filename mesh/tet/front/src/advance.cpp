@@ -294,7 +294,8 @@ class Front {
     // depend on the grid's cells).
     const Vec3 candidates =
         Vec3::Constant(kCandidateRadius * field_.largest_reaching(h, kCandidateRadius));
-    faces_near(grid_, lo - candidates, hi + candidates, live_, nearby_);
+    if (failed_live_ > 0) faces_near(grid_, lo - candidates, hi + candidates, live_, nearby_);
+    else nearby_.clear();
     for (const Index g : nearby_) {
       if (!live_[g] || !failed_[g]) continue;
       const Tri& u = faces_[g];
@@ -306,11 +307,17 @@ class Front {
       failed_[g] = 0;
       --failed_live_;
     }
-    // The solid-angle estimates of the front nodes whose ball meets the tet, less the points
-    // deleted in it.
+    // The solid-angle estimates of the front nodes whose ball meets a point deleted on the
+    // counting lattice, less those points.
+    if (deleted_.empty()) return;
+    Vec3 dlo = deleted_.front().p, dhi = dlo;
+    for (const LatticePoint& x : deleted_) {
+      dlo = dlo.cwiseMin(x.p);
+      dhi = dhi.cwiseMax(x.p);
+    }
     const Vec3 reach =
         Vec3::Constant(kSolidAngleRadius * field_.largest_reaching(h, kSolidAngleRadius));
-    faces_near(grid_, lo - reach, hi + reach, live_, nearby_);
+    faces_near(grid_, dlo - reach, dhi + reach, live_, nearby_);
     stale_.clear();
     for (const Index g : nearby_) stale_.insert(stale_.end(), faces_[g].begin(), faces_[g].end());
     std::sort(stale_.begin(), stale_.end());

@@ -6,9 +6,9 @@ namespace {
 
 // The offset of the grid from the box corner, in steps: generic, see aux_origin.
 const Vec3 kOffset(0.3183098861837907, 0.2718281828459045, 0.1414213562373095);
-// A leaf is split while its side exceeds the local size by more than this factor: its n points
-// along a side are then at least n / √2 per local size.
-constexpr double kMaxSideRatio = 1.4142135623730951;
+// A leaf is split while its side exceeds the local size by more than this factor: its points
+// are then between n / 2 and n per local size along each axis, never finer than n.
+constexpr double kMaxSideRatio = 2.0;
 // No leaf is deeper than this: sizes 2^-30 of the largest.
 constexpr int kMaxLevel = 30;
 

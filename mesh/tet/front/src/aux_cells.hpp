@@ -1,7 +1,7 @@
 #pragma once
 // The cells of the auxiliary points: an octree over a grid of level-0 blocks, each leaf of
 // level L a cube of n × n × n points at step s0 / 2^L (n the auxiliary ratio, s0 = the
-// field's largest size / n), split while its side exceeds √2 times the local size below it
+// field's largest size / n), split while its side exceeds twice the local size below it
 // (size_field.hpp).
 // So a leaf is about one target edge wide, and the points follow the local size: their count
 // grows with the number of tets, not with (box / smallest size)^3. With a uniform size every

@@ -10,6 +10,9 @@ namespace {
 
 // The tree of candidates splits a box while it keeps more boundary points than this.
 constexpr std::size_t kLeafCandidates = 8;
+// and is wider than this fraction of the least size in it (deep inside, the nearest few
+// boundary points tie to within less than a box: many remain candidates in any small box),
+constexpr double kLeafSizeFraction = 0.5;
 // and no deeper than this (boxes 2^-14 of the boundary's).
 constexpr int kMaxDepth = 14;
 
@@ -70,11 +73,14 @@ int SizeField::build(const Vec3& lo, const Vec3& hi, std::vector<Index> candidat
   double upper = cap_;
   for (const Index v : candidates)
     upper = std::min(upper, value_[v] + kGradingRate * max_distance(seeds_[v], lo, hi));
+  double least = upper;
   std::erase_if(candidates, [&](Index v) {
     const double lower = value_[v] + kGradingRate * min_distance(seeds_[v], lo, hi);
+    least = std::min(least, lower);
     return lower >= cap_ || lower > upper;
   });
-  if (candidates.size() <= kLeafCandidates || depth >= kMaxDepth) {
+  if (candidates.size() <= kLeafCandidates || depth >= kMaxDepth ||
+      (hi - lo).norm() <= kLeafSizeFraction * least) {
     nodes_[id].first = static_cast<int>(candidates_.size());
     nodes_[id].count = static_cast<int>(candidates.size());
     candidates_.insert(candidates_.end(), candidates.begin(), candidates.end());

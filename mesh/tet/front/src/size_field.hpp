@@ -3,8 +3,8 @@
 // inward at a bounded rate to the target size (docs/methods.md, "tet-front", grading).
 //
 // Each boundary point p carries e(p): the mean length of its incident edges where that is
-// below the target size / 1.5, else the target size (a boundary made for a size, with edges
-// of 0.7 to 1 times it, fits it: its mesh is the uniform one); then
+// below half the target size, else the target size (a boundary made for a size, its edges
+// mostly 0.5 to 1 times it, fits it: its mesh is the uniform one); then
 //     h(x) = min(cap, min over boundary points p of e(p) + rate |x - p|),
 // the largest function with gradient at most `rate` that stays below e at the boundary and
 // below cap everywhere. cap is the target size (--size), or the interior size when given
@@ -20,7 +20,7 @@ namespace volmesh::tet::front {
 // The size's growth per unit distance from the boundary.
 inline constexpr double kGradingRate = 0.25;
 // A boundary point fits the target size when its mean edge is at least the size over this.
-inline constexpr double kFitRatio = 1.5;
+inline constexpr double kFitRatio = 2.0;
 
 class SizeField {
  public:
