@@ -9,8 +9,6 @@ const Vec3 kOffset(0.3183098861837907, 0.2718281828459045, 0.1414213562373095);
 // A leaf is split while its side exceeds the local size by more than this factor: its points
 // are then between n / 2 and n per local size along each axis, never finer than n.
 constexpr double kMaxSideRatio = 2.0;
-// No leaf is deeper than this: sizes 2^-30 of the largest.
-constexpr int kMaxLevel = 30;
 
 struct Builder {
   AuxCells& c;
@@ -23,7 +21,7 @@ struct Builder {
     const double side = c.side(level);
     const AuxLeaf leaf{level, block};
     const Vec3 lo = c.leaf_lo(leaf), hi = lo + Vec3::Constant(side);
-    if (level >= kMaxLevel || full() || side <= kMaxSideRatio * field.min_in_box(lo, hi)) {
+    if (level >= kMaxAuxLevel || full() || side <= kMaxSideRatio * field.min_in_box(lo, hi)) {
       c.nodes[node].leaf = static_cast<int>(c.leaves.size());
       c.leaves.push_back(leaf);
       c.finest = std::max(c.finest, level);

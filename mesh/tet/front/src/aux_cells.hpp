@@ -17,6 +17,9 @@
 
 namespace volmesh::tet::front {
 
+// No leaf is deeper than this: sizes 2^-30 of the largest.
+inline constexpr int kMaxAuxLevel = 30;
+
 struct AuxLeaf {
   int level = 0;
   std::array<long long, 3> block{0, 0, 0};  // its position in cubes of its side
@@ -79,15 +82,16 @@ void for_each_leaf(const AuxCells& c, const Vec3& lo, const Vec3& hi, F&& f) {
     Vec3 lo;
     int level;
   };
-  std::vector<Item> stack;
+  // A depth-first descent holds at most 7 siblings per level and 8 children at the bottom.
+  std::array<Item, 7 * kMaxAuxLevel + 8> stack;
+  std::size_t top = 0;
   for (long long k = b0[2]; k <= b1[2]; ++k)
     for (long long j = b0[1]; j <= b1[1]; ++j)
       for (long long i = b0[0]; i <= b1[0]; ++i) {
-        stack.push_back({static_cast<int>(i + c.blocks[0] * (j + c.blocks[1] * k)),
-                         c.origin + side0 * Vec3(double(i), double(j), double(k)), 0});
-        while (!stack.empty()) {
-          const Item item = stack.back();
-          stack.pop_back();
+        stack[top++] = {static_cast<int>(i + c.blocks[0] * (j + c.blocks[1] * k)),
+                        c.origin + side0 * Vec3(double(i), double(j), double(k)), 0};
+        while (top > 0) {
+          const Item item = stack[--top];
           const AuxCells::Node& node = c.nodes[item.node];
           if (node.leaf >= 0) {
             f(node.leaf);
@@ -100,7 +104,7 @@ void for_each_leaf(const AuxCells& c, const Vec3& lo, const Vec3& hi, F&& f) {
                                                    double((o >> 2) & 1));
             bool meets = true;
             for (int a = 0; a < 3; ++a) meets = meets && clo[a] <= hi[a] && clo[a] + half >= lo[a];
-            if (meets) stack.push_back({node.child + o, clo, item.level + 1});
+            if (meets) stack[top++] = {node.child + o, clo, item.level + 1};
           }
         }
       }
