@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "aux_grid.hpp"
-#include "front_checks.hpp"
+#include "split_checks.hpp"
 #include "front_surfaces.hpp"
 #include "size_field.hpp"
 #include "volmesh/core/errors.hpp"
@@ -142,6 +142,27 @@ TEST(AuxCells, FollowTheLocalSize) {
   }
 }
 
+// A grid of one step (for a uniform size) is reached point by point: alive exactly strictly
+// inside the cube [0.25, 0.75]^3, and as many alive as it counts.
+TEST(AuxCells, AUniformGridIsIndexedByItsPoints) {
+  const TriSurface cube = read_surface(VOLMESH_TEST_DATA "/domains/inner_cube.off");
+  const front::AuxGrid g = front::make_aux_grid(cube.points, cube.triangles, 0.03);
+  ASSERT_GT(g.n[0], 0);
+  long long alive = 0, wrong = 0;
+  for (long long k = 0; k < g.n[2]; ++k)
+    for (long long j = 0; j < g.n[1]; ++j)
+      for (long long i = 0; i < g.n[0]; ++i) {
+        const Vec3 p = g.point(i, j, k);
+        const bool inside = (p.array() > 0.25).all() && (p.array() < 0.75).all();
+        const bool live = g.alive(g.at(i, j, k));
+        alive += live;
+        wrong += live != inside;
+      }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(alive, g.live);
+  EXPECT_GT(alive, 0);
+}
+
 FrontResult mesh_with_threads(const std::vector<ProjectionSurface>& surfaces,
                               const FrontOptions& options, int threads) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -150,13 +171,12 @@ FrontResult mesh_with_threads(const std::vector<ProjectionSurface>& surfaces,
 
 // At ten times the boundary's mean edge the front grades from the boundary's size: a valid mesh
 // (every tet positive by the exact test, conforming, its volume, the input triangles kept) of at
-// most ten tets per input triangle (the uniform size made 656,516 tets at 0.2), the same bytes
-// for one and two threads.
+// most ten tets per input triangle, the same bytes for one and two threads.
 TEST(TetFrontGrading, SizeFarAboveTheBoundaryGivesAValidMesh) {
   const auto surfaces = cactus();
   const FrontOptions options{.size = kTenTimesCactusEdge};
   const FrontResult r = mesh_with_threads(surfaces, options, 1);
-  test::expect_valid(surfaces[0].surface, r);
+  test::expect_valid_with_splits(surfaces[0].surface, r);
   Index not_positive = 0;
   const auto cg = [&](Index v) {
     const Vec3& p = r.mesh.points[v];
@@ -183,8 +203,8 @@ TEST(TetFrontGrading, InteriorSizeMakesFewerTets) {
   const FrontResult fine = tetrahedralize_by_front(surfaces, {.size = kSize, .improve = false});
   const FrontResult graded = tetrahedralize_by_front(
       surfaces, {.size = kSize, .improve = false, .interior_size = kInterior});
-  test::expect_valid(surfaces[0].surface, fine);
-  test::expect_valid(surfaces[0].surface, graded);
+  test::expect_valid_with_splits(surfaces[0].surface, fine);
+  test::expect_valid_with_splits(surfaces[0].surface, graded);
   EXPECT_EQ(graded.stats.size_max, kInterior);
   EXPECT_LT(graded.mesh.num_cells(), fine.mesh.num_cells());
 }

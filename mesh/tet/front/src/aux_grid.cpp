@@ -12,6 +12,8 @@ namespace {
 
 // Barycentric margin telling "strictly inside" from "on a face" for points computed in doubles.
 constexpr double kMargin = 1e-9;
+// The leaves' points along a side in a grid of one step.
+constexpr int kUniformLeafPoints = 16;
 
 void set_alive(AuxGrid& g, long long id) { g.bits[id >> 6] |= std::uint64_t{1} << (id & 63); }
 void set_deleted(AuxGrid& g, long long id) { g.bits[id >> 6] &= ~(std::uint64_t{1} << (id & 63)); }
@@ -217,7 +219,22 @@ AuxGrid make_aux_grid(const std::vector<Vec3>& points,
       }
   }
   g.initial = g.live;
+  if (c.finest == 0)
+    for (int a = 0; a < 3; ++a) g.n[a] = c.blocks[a] * n;
   return g;
+}
+
+AuxGrid make_aux_grid(const std::vector<Vec3>& points,
+                      const std::vector<std::array<Index, 3>>& triangles, double step) {
+  // A field of no boundary points is the constant cap: leaves of kUniformLeafPoints per side.
+  const SizeField uniform({}, {}, step * kUniformLeafPoints, 0.0);
+  return make_aux_grid(points, triangles, uniform, kUniformLeafPoints);
+}
+
+long long AuxGrid::at(long long i, long long j, long long k) const {
+  const int n = cells.n;
+  const long long block = i / n + cells.blocks[0] * (j / n + cells.blocks[1] * (k / n));
+  return cells.nodes[block].leaf * per_leaf + i % n + n * (j % n + n * (k % n));
 }
 
 double count_live_in_ball(const AuxGrid& g, const Vec3& centre, double radius, int stride) {

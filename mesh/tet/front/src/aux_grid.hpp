@@ -24,8 +24,16 @@ struct AuxGrid {
   long long per_leaf = 0;           // n^3
   std::vector<std::uint64_t> bits;  // 1 = alive
   long long live = 0, initial = 0;
+  // For a uniform size (every leaf of level 0): the points along each axis of the one grid
+  // they make, origin + step0 (i, j, k); 0 when graded.
+  std::array<long long, 3> n{0, 0, 0};
 
   bool alive(long long id) const { return (bits[id >> 6] >> (id & 63)) & 1U; }
+  // A uniform grid's point (i, j, k), 0 <= i < n[0] ...: its id and place.
+  long long at(long long i, long long j, long long k) const;
+  Vec3 point(long long i, long long j, long long k) const {
+    return cells.origin + cells.step0 * Vec3(double(i), double(j), double(k));
+  }
 };
 
 // A deleted point on the counting lattice (count_live_in_ball's), with its weight there.
@@ -46,6 +54,10 @@ double aux_grid_points(const Vec3& lo, const Vec3& hi, double step);
 AuxGrid make_aux_grid(const std::vector<Vec3>& points,
                       const std::vector<std::array<Index, 3>>& triangles, const SizeField& field,
                       int n);
+
+// The same for one grid of `step` (a uniform size), its points reached by AuxGrid::at.
+AuxGrid make_aux_grid(const std::vector<Vec3>& points,
+                      const std::vector<std::array<Index, 3>>& triangles, double step);
 
 // The points make_aux_grid would lay over the box [lo, hi], or a number above kMaxAuxPoints
 // once they exceed it.

@@ -14,17 +14,17 @@
 
 namespace volmesh::tet::test {
 
-inline double enclosed_volume(const TriSurface& s) {
+inline double surface_volume(const TriSurface& s) {
   double v = 0.0;
   for (const auto& t : s.triangles)
     v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]])) / 6.0;
   return v;
 }
 
-inline void expect_valid(const TriSurface& surface, const FrontResult& r) {
+inline void expect_valid_with_splits(const TriSurface& surface, const FrontResult& r) {
   const ValidityReport v = check_validity(to_poly_mesh(r.mesh));
   EXPECT_TRUE(v.valid()) << (v.problems.empty() ? "" : v.problems.front());
-  const double enclosed = enclosed_volume(surface);
+  const double enclosed = surface_volume(surface);
   EXPECT_NEAR(v.total_volume, enclosed, 1e-12 * enclosed);
   std::set<std::array<Index, 3>> boundary;
   for (auto f : r.mesh.boundary_faces) {
