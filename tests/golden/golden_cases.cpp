@@ -58,11 +58,11 @@ const std::vector<GoldenCase>& golden_cases() {
       {.name = "tet-front-cube-inclusion-2", .method = "tet-front",
        .domain = "builtin:cube-inclusion", .size = 2.0},
       {.name = "tet-front-ball-0.4", .method = "tet-front", .domain = "builtin:ball", .size = 0.4},
-      // The front stopped after 20 tets: the fallback closes the cavity by projection and
+      // The front stopped after 10 tets: the fallback closes the cavity by projection and
       // refines the tets around the faces it cuts.
-      {.name = "tet-front-tripod-0.5-stalled", .method = "tet-front",
-       .domain = "cgal:meshes/tripod.off", .size = 0.5,
-       .options = {{"stop-after", std::int64_t{20}}}},
+      {.name = "tet-front-tripod-0.3-stalled", .method = "tet-front",
+       .domain = "cgal:meshes/tripod.off", .size = 0.3,
+       .options = {{"stop-after", std::int64_t{10}}}},
   };
   return cases;
 }

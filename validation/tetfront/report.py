@@ -243,12 +243,13 @@ def target_row(model, by_tool):
 
 def sweep(out):
     surfaces = text(out, "sweep", "surfaces").split()
+    scales = text(out, "sweep", "scales").split() or ["1"]
     rows = []
-    for surface in surfaces:
-        r = run_row(out, f"sweep-{surface}")
+    for surface, scale in [(s, k) for s in surfaces for k in scales]:
+        r = run_row(out, f"sweep-{surface}" if scale == "1" else f"sweep{scale}x-{surface}")
         info = (load_json_safe(out / f"sweep-{surface}.info.json") or {}).get("surface", {})
         enclosed = text(out, f"sweep-{surface}", "volume").strip()
-        r["surface"], r["triangles"] = surface, info.get("triangles")
+        r["surface"], r["triangles"], r["scale"] = surface, info.get("triangles"), int(scale)
         r["enclosed_volume"] = float(enclosed) if enclosed else None
         r["volume_difference"] = (r["volume"] - r["enclosed_volume"]) / r["enclosed_volume"] \
             if r["volume"] is not None and r["enclosed_volume"] else None
@@ -261,11 +262,13 @@ def sweep(out):
     print("## libcgal-demo sweep\n")
     print("Every libcgal-demo `.off` that `volmesh info` finds closed, manifold and free of "
           "self-intersections, through `volmesh mesh tet-front` at h = the mean edge of its "
-          "triangles, then `volmesh check`: valid, and its total volume against the volume "
+          f"triangles times {' and '.join(scales)} (×: the scale; above the boundary's edges "
+          "the size is graded from them), then `volmesh check`: valid, and its total volume "
+          "against the volume "
           "the surface encloses (summed exactly in rationals from the file's doubles) to "
           f"{VOLUME_TOLERANCE:g} relative. stalls / fallback tets: the front's stalls closed "
           "by the projection fallback (`--json` fallback).\n")
-    print(f"**{len(good)} of {len(rows)} surfaces meshed, valid, volume within "
+    print(f"**{len(good)} of {len(rows)} runs meshed, valid, volume within "
           f"{VOLUME_TOLERANCE:g}**; {len(meshed) - len(good)} meshed with a fault, "
           f"{sum(r['status'] == 'refused' for r in rows)} refused, "
           f"{sum(r['status'] == 'time-out' for r in rows)} time-outs, "
@@ -280,17 +283,19 @@ def sweep(out):
         for r in failed:
             what = r["message"] if r["status"] != "meshed" else (
                 f"valid {yes(r['valid'])}, volume difference {fmt(r['volume_difference'], '.1e')}")
-            print(f"- {r['surface']} ({fmt(r['triangles'])} triangles): {r['status']}: `{what}`")
+            print(f"- {r['surface']} ×{r['scale']} ({fmt(r['triangles'])} triangles): "
+                  f"{r['status']}: `{what}`")
         print()
     excluded(out, set(surfaces))
-    table(["surface", "triangles", "h", "status", "tets", "valid", "enclosed volume",
+    table(["surface", "triangles", "×", "h", "status", "tets", "valid", "enclosed volume",
            "mesh vol. rel. diff.", "min dihedral °", "stalls / fallback tets", "wall s"],
-          [[r["surface"], r["triangles"], fmt(r["size"], ".4g"),
+          [[r["surface"], r["triangles"], r["scale"], fmt(r["size"], ".4g"),
             r["status"] if r["status"] == "meshed" else outcome(r), r["tets"], yes(r["valid"]),
             fmt(r["enclosed_volume"], ".8g"), fmt(r["volume_difference"], ".1e"),
             fmt(r["min_dihedral"], ".2f"),
             f"{r['stalls']} / {r['fallback_tets']}" if r["status"] == "meshed" else None,
-            fmt(r["wall_seconds"], ".1f")] for r in sorted(rows, key=lambda r: r["triangles"] or 0)])
+            fmt(r["wall_seconds"], ".1f")]
+           for r in sorted(rows, key=lambda r: (r["triangles"] or 0, r["surface"], r["scale"]))])
     write_rows(out, "sweep", [{k: v for k, v in r.items() if k != "histogram"} for r in rows])
 
 

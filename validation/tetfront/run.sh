@@ -5,8 +5,9 @@
 #      `volmesh mesh tet-front` at a size matched to TetGen's tet count; every mesh through
 #      `volmesh check`: tets, time, min/max dihedral, radius-edge max and mean, histogram;
 #   2. sweep: tet-front on every closed, manifold, non-self-intersecting libcgal-demo surface
-#      (`volmesh info` decides) at the mean edge of its triangles: validity, the volume against
-#      the exact enclosed volume, fallbacks, refusals and time-outs;
+#      (`volmesh info` decides) at the mean edge of its triangles and at 10 times it (graded
+#      from the boundary): validity, the volume against the exact enclosed volume, fallbacks,
+#      refusals and time-outs;
 #   3. paper: builtin:cube-inclusion at --size 2 beside the paper's 297 tets;
 #   4. bad: inputs that must be refused with one line, exit 1 and no output file.
 # Writes build/validation-tetfront/out/report.md (with CSV and JSON rows beside it) and prints
@@ -23,7 +24,9 @@
 #                                 volume, no rerun (default: the mean edge, then matched)
 #   TETFRONT_INTERIOR=delaunay|front         ours' --interior (default: tet-front's own)
 #   TETFRONT_SWEEP="all" | "NAME ..."        the sweep's surfaces (default all)
-#   TETFRONT_SWEEP_TIMEOUT=S      per sweep run (default 120)
+#   TETFRONT_SWEEP_TIMEOUT=S      per sweep run (default 300)
+#   TETFRONT_SWEEP_SCALES="1 10"  the sweep's sizes, in mean edges (default both)
+#   TETFRONT_INTERIOR_RATIO=R     ours with --interior-size R times its --size (default none)
 #   TETFRONT_KEEP_MESHES=1        keep the .vtu files (default: deleted once checked)
 #   TETFRONT_REPORT_ONLY=1        no runs: the report from the results already in out/
 set -euo pipefail
@@ -46,7 +49,9 @@ MATCH_PASSES=${TETFRONT_MATCH_PASSES:-1}
 SIZE_FROM=${TETFRONT_SIZE_FROM:-edge}
 INTERIOR=${TETFRONT_INTERIOR:-}
 SWEEP=${TETFRONT_SWEEP:-all}
-SWEEP_TIMEOUT=${TETFRONT_SWEEP_TIMEOUT:-120}
+SWEEP_TIMEOUT=${TETFRONT_SWEEP_TIMEOUT:-300}
+SWEEP_SCALES=${TETFRONT_SWEEP_SCALES:-1 10}
+INTERIOR_RATIO=${TETFRONT_INTERIOR_RATIO:-}
 KEEP=${TETFRONT_KEEP_MESHES:-0}
 REPORT_ONLY=${TETFRONT_REPORT_ONLY:-0}
 TETGEN_SWITCHES=-pq1.414
@@ -91,10 +96,13 @@ check() {  # name mesh
 # Ours: NAME.out is `volmesh mesh tet-front --json`, NAME.size the size used.
 ours() {  # name domain size seconds
   local mesh=$OUT/$1.vtu
+  local graded=()
+  [ -z "$INTERIOR_RATIO" ] \
+    || graded=(--interior-size "$("$PY" -c "import sys; print(float(sys.argv[1]) * float(sys.argv[2]))" "$3" "$INTERIOR_RATIO")")
   rm -f "$mesh"
   echo "$3" > "$OUT/$1.size"
   timed "$1" "$4" "$VOLMESH" mesh tet-front "$2" --size "$3" ${INTERIOR:+--interior "$INTERIOR"} \
-    -o "$mesh" --json -q
+    "${graded[@]}" -o "$mesh" --json -q
   check "$1" "$mesh"
 }
 
@@ -221,13 +229,19 @@ if runs sweep; then
       2> "$OUT/sweep-$name.info.err" || true  # a surface info refuses is not swept
     "$PY" "$HERE/meshes.py" sweepable "$info" 2> /dev/null || continue
     echo "$name" >> "$OUT/sweep.surfaces"
-    h=$("$PY" "$HERE/meshes.py" edge "$MESHES/$name.off")
-    echo "tet-front $name --size $h"
-    ours "sweep-$name" "$MESHES/$name.off" "$h" "$SWEEP_TIMEOUT"
+    edge=$("$PY" "$HERE/meshes.py" edge "$MESHES/$name.off")
     rm -f "$OUT/sweep-$name.volume"
-    [ -f "$OUT/sweep-$name.check.json" ] \
-      && "$PY" "$HERE/meshes.py" volume "$MESHES/$name.off" > "$OUT/sweep-$name.volume"
+    for scale in $SWEEP_SCALES; do
+      run=sweep-$name
+      [ "$scale" = 1 ] || run=sweep${scale}x-$name
+      h=$("$PY" -c "import sys; print(float(sys.argv[1]) * float(sys.argv[2]))" "$edge" "$scale")
+      echo "tet-front $name --size $h"
+      ours "$run" "$MESHES/$name.off" "$h" "$SWEEP_TIMEOUT"
+      [ -f "$OUT/sweep-$name.volume" ] || [ ! -f "$OUT/$run.check.json" ] \
+        || "$PY" "$HERE/meshes.py" volume "$MESHES/$name.off" > "$OUT/sweep-$name.volume"
+    done
   done
+  echo "$SWEEP_SCALES" > "$OUT/sweep.scales"
 fi
 
 if runs paper; then

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,21 @@ nlohmann::json remesh(std::vector<tet::ProjectionSurface>& surfaces, double h) {
           {"hausdorff", {{"to_input", to_input}, {"from_input", from_input}}}};
 }
 
+// --interior-size's value, read as --size is (any number, nan and inf included, for the
+// mesher to refuse by name); text that is no number is refused here.
+double interior_size(const std::string& name, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size())
+    throw InputError("tet-front: " + name + ": --interior-size " + text + " is not a number");
+  return value;
+}
+
 MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   auto clock = Clock::now();
   const double size = request.size.value_or(0.0);
@@ -91,6 +107,11 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   // Before the boundary is triangulated at h: the domain's box holds the boundary's.
   const Box3 box = domain.bounds();
   tet::require_front_size(request.domain_name, size, options.aux_ratio, box.lo, box.hi);
+  if (const auto interior = given<std::string>(request.options, "interior-size")) {
+    options.interior_size = interior_size(request.domain_name, *interior);
+    tet::require_front_interior_size(request.domain_name, options.interior_size, size, box.lo,
+                                     box.hi);
+  }
   report(request.progress, "triangulating the boundary", 0.0);
   BoundarySurfaces boundary = triangulated_surfaces(domain, request.domain_name, kMethod, size);
   std::vector<tet::ProjectionSurface>& surfaces = boundary.surfaces;
@@ -133,6 +154,9 @@ MeshResult mesh_tet_front(const Domain& domain, const MeshRequest& request) {
   r.summary = {{"tets", front.mesh.num_cells()},
                {"nodes", front.mesh.num_points()},
                {"aux_ratio", options.aux_ratio},
+               {"size_field", {{"min", s.size_min},
+                               {"max", s.size_max},
+                               {"grading_rate", s.grading_rate}}},
                {"boundary", boundary_json},
                {"interior", {{"method", interior_name(options.interior)},
                              {"core_points", s.core_points},
@@ -177,6 +201,10 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::choice,
                  .choices = {interior_name(tet::Interior::delaunay),
                              interior_name(tet::Interior::front)}},
+                {.name = "interior-size",
+                 .help = "graded sizes: grow the size inward from the boundary's past h up to H "
+                         "(at least h, at most the bounding-box diagonal)",
+                 .type = OptionSpec::Type::text},
                 {.name = "remesh-surface",
                  .help = "remesh the boundary to edge h first (isotropic, sharp edges kept); "
                          "--json gives the Hausdorff distance to the input",

@@ -9,6 +9,7 @@
 #include "aux_grid.hpp"
 #include "face_grid.hpp"
 #include "predicates.hpp"
+#include "size_field.hpp"
 #include "volmesh/core/element_mesh.hpp"
 
 namespace volmesh::tet::front {
@@ -65,18 +66,13 @@ enum class Tests { all, exact };
 
 class Front {
  public:
-  Front(std::vector<Vec3>& points, const std::vector<Tri>& faces, const FrontOptions& options)
-      : pts_(points), h_(options.size), vmax_(kMaxVolume * h_ * h_ * h_) {
-    aux_ = make_aux_grid(points, faces, h_ / options.aux_ratio);
+  Front(std::vector<Vec3>& points, const std::vector<Tri>& faces, const FrontOptions& options,
+        const SizeField& field)
+      : pts_(points), field_(field), aux_ratio_(options.aux_ratio) {
+    aux_ = make_aux_grid(points, faces, field, options.aux_ratio);
     stride_ = std::max(1, static_cast<int>(std::lround(kSolidAngleRadius * options.aux_ratio /
                                                        kSolidAngleSamplesPerRadius)));
-    Vec3 lo = points[faces.front()[0]], hi = lo;
-    for (const Tri& t : faces)
-      for (const Index v : t) {
-        lo = lo.cwiseMin(points[v]);
-        hi = hi.cwiseMax(points[v]);
-      }
-    grid_ = make_face_grid(lo, hi, h_);
+    grid_ = make_face_grid(aux_.cells);
     for (const Tri& t : faces) add_face(t);
   }
 
@@ -97,11 +93,11 @@ class Front {
   Index select() const {
     for (const auto& [estimate, v] : order_) {
       Index best = kNoIndex;
-      long long best_sum = 0;
+      double best_sum = 0.0;
       for (const Index f : node_faces_[v]) {
         if (!live_[f] || failed_[f]) continue;
         const Tri& t = faces_[f];
-        const long long sum = estimate_[t[0]] + estimate_[t[1]] + estimate_[t[2]];
+        const double sum = key(t[0]) + key(t[1]) + key(t[2]);
         if (best == kNoIndex || sum < best_sum) {
           best = f;
           best_sum = sum;
@@ -116,7 +112,10 @@ class Front {
   bool advance(Index f, RegionFront& out) {
     const Tri t = faces_[f];
     const std::array<Vec3, 3> p{pts_[t[0]], pts_[t[1]], pts_[t[2]]};
-    const double reach = kCandidateRadius * h_;
+    // The local size at the face sets the reach, Vmax and the new node's height.
+    const double h = field_.at((p[0] + p[1] + p[2]) / 3.0);
+    vmax_ = kMaxVolume * h * h * h;
+    const double reach = kCandidateRadius * h;
     const std::vector<Index> near = nodes_near(t, reach);
     const auto [existing, existing_q] = best_existing(t, near, reach, Tests::all);
     if (existing != kNoIndex && existing_q >= kGoodQuality) {
@@ -132,7 +131,7 @@ class Front {
     const Index id = static_cast<Index>(pts_.size());
     for (int k = 0; k <= kMaxShrinks; ++k, height *= kShrink) {
       const Vec3 q = centre + height * normal;
-      if (deleted_in_ball(aux_, q, kFreeBallRadius * aux_.step)) continue;
+      if (deleted_in_ball(aux_, q, kFreeBallRadius * (h / aux_ratio_))) continue;
       if (tet_quality(t, id, q, existing_q, Tests::all) <= 0.0) continue;
       pts_.push_back(q);
       ++out.new_nodes;
@@ -269,8 +268,8 @@ class Front {
     out.tets.push_back(tet);
     std::array<Vec3, 4> p;
     for (int i = 0; i < 4; ++i) p[i] = pts_[tet[i]];
-    std::vector<Vec3> deleted;
-    out.aux_deleted += delete_covered(aux_, p, stride_, deleted);
+    deleted_.clear();
+    out.aux_deleted += delete_covered(aux_, p, stride_, deleted_);
     // Each face of the tet closes the front face it matches (facing into the tet), or opens
     // a new one facing out of it.
     for (const auto& f : kTetFaces) {
@@ -286,38 +285,61 @@ class Front {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    // A failed face may advance once the front near it has changed: within reach of a
-    // fourth corner of it.
-    const Vec3 candidates = Vec3::Constant(kCandidateRadius * h_);
-    faces_near(grid_, lo - candidates, hi + candidates, live_, nearby_);
-    for (const Index g : nearby_)
-      if (live_[g] && failed_[g]) {
-        failed_[g] = 0;
-        --failed_live_;
-      }
-    // The solid-angle estimates of the front nodes whose ball meets the tet, less the points
-    // deleted in it.
-    const double radius = kSolidAngleRadius * h_;
-    const Vec3 reach = Vec3::Constant(radius);
-    faces_near(grid_, lo - reach, hi + reach, live_, nearby_);
+    // The largest size of a face or node near the tet: the reach of the faces and balls that
+    // may meet it.
+    double h = 0.0;
+    for (const Vec3& x : p) h = std::max(h, field_.at(x));
+    // A failed face may advance once the front near it has changed: when its box is within
+    // reach of a fourth corner of it (a test on the boxes, so that the faces retried do not
+    // depend on the grid's cells).
+    const Vec3 candidates =
+        Vec3::Constant(kCandidateRadius * field_.largest_reaching(h, kCandidateRadius));
+    if (failed_live_ > 0) faces_near(grid_, lo - candidates, hi + candidates, live_, nearby_);
+    else nearby_.clear();
+    for (const Index g : nearby_) {
+      if (!live_[g] || !failed_[g]) continue;
+      const Tri& u = faces_[g];
+      const Vec3 ulo = pts_[u[0]].cwiseMin(pts_[u[1]]).cwiseMin(pts_[u[2]]);
+      const Vec3 uhi = pts_[u[0]].cwiseMax(pts_[u[1]]).cwiseMax(pts_[u[2]]);
+      if (((ulo - candidates).array() > hi.array()).any() ||
+          ((uhi + candidates).array() < lo.array()).any())
+        continue;
+      failed_[g] = 0;
+      --failed_live_;
+    }
+    // The solid-angle estimates of the front nodes whose ball meets a point deleted on the
+    // counting lattice, less those points.
+    if (deleted_.empty()) return;
+    Vec3 dlo = deleted_.front().p, dhi = dlo;
+    for (const LatticePoint& x : deleted_) {
+      dlo = dlo.cwiseMin(x.p);
+      dhi = dhi.cwiseMax(x.p);
+    }
+    const Vec3 reach =
+        Vec3::Constant(kSolidAngleRadius * field_.largest_reaching(h, kSolidAngleRadius));
+    faces_near(grid_, dlo - reach, dhi + reach, live_, nearby_);
     stale_.clear();
     for (const Index g : nearby_) stale_.insert(stale_.end(), faces_[g].begin(), faces_[g].end());
     std::sort(stale_.begin(), stale_.end());
     stale_.erase(std::unique(stale_.begin(), stale_.end()), stale_.end());
     for (const Index v : stale_) {
-      long long gone = 0;
-      for (const Vec3& x : deleted)
-        if ((x - pts_[v]).squaredNorm() <= radius * radius) ++gone;
-      if (gone == 0) continue;
-      order_.erase({estimate_[v], v});
+      const double r2 = radius_[v] * radius_[v];
+      double gone = 0.0;
+      for (const LatticePoint& x : deleted_)
+        if ((x.p - pts_[v]).squaredNorm() <= r2) gone += x.weight;
+      if (gone == 0.0) continue;
+      order_.erase({key(v), v});
       estimate_[v] -= gone;
-      order_.insert({estimate_[v], v});
+      order_.insert({key(v), v});
     }
   }
 
-  long long estimate(Index v) const {
-    return count_live_in_ball(aux_, pts_[v], kSolidAngleRadius * h_, stride_);
+  // A node's live auxiliary volume within √2 h(v) (in units of the finest points'), and its
+  // order key: that volume over its ball's, up to a constant (the cap's ball).
+  double estimate(Index v) const {
+    return count_live_in_ball(aux_, pts_[v], radius_[v], stride_);
   }
+  double key(Index v) const { return estimate_[v] * scale_[v]; }
 
   void add_face(const Tri& t) {
     const Index f = static_cast<Index>(faces_.size());
@@ -329,7 +351,9 @@ class Front {
     if (pts_.size() > node_faces_.size()) {
       node_faces_.resize(pts_.size());
       node_live_.resize(pts_.size(), 0);
-      estimate_.resize(pts_.size(), 0);
+      estimate_.resize(pts_.size(), 0.0);
+      radius_.resize(pts_.size(), 0.0);
+      scale_.resize(pts_.size(), 0.0);
     }
     Vec3 lo = pts_[t[0]], hi = lo;
     for (const Index v : t) {
@@ -337,8 +361,11 @@ class Front {
       hi = hi.cwiseMax(pts_[v]);
       node_faces_[v].push_back(f);
       if (node_live_[v]++ == 0) {
+        const double hv = field_.at(pts_[v]), ratio = field_.cap() / hv;
+        radius_[v] = kSolidAngleRadius * hv;
+        scale_[v] = ratio * ratio * ratio;
         estimate_[v] = estimate(v);
-        order_.insert({estimate_[v], v});
+        order_.insert({key(v), v});
       }
     }
     insert_face(grid_, f, lo, hi);
@@ -352,12 +379,14 @@ class Front {
     for (const Index v : faces_[f]) {
       auto& list = node_faces_[v];
       list.erase(std::find(list.begin(), list.end(), f));
-      if (--node_live_[v] == 0) order_.erase({estimate_[v], v});
+      if (--node_live_[v] == 0) order_.erase({key(v), v});
     }
   }
 
   std::vector<Vec3>& pts_;
-  double h_, vmax_;
+  const SizeField& field_;
+  int aux_ratio_;
+  double vmax_ = 0.0;  // Vmax at the face advance() works on
   int stride_ = 1;
   AuxGrid aux_;
   FaceGrid grid_;
@@ -367,12 +396,13 @@ class Front {
   std::unordered_map<Tri, Index, TriHash> by_key_;
   std::vector<std::vector<Index>> node_faces_;  // by point: its live faces
   std::vector<int> node_live_;
-  std::vector<long long> estimate_;
-  std::set<std::pair<long long, Index>> order_;  // the front nodes by estimate
+  std::vector<double> estimate_, radius_, scale_;  // by point: estimate(), √2 h(v), key's factor
+  std::set<std::pair<double, Index>> order_;  // the front nodes by key
   // Buffers reused by the candidate tests.
   std::vector<Index> nearby_;
   std::vector<std::pair<double, Index>> ranked_;
   std::vector<Index> stale_;  // add_tet's front nodes near the new tet, sorted
+  std::vector<LatticePoint> deleted_;  // add_tet's deleted points on the counting lattice
   std::vector<unsigned> node_stamp_;  // by point: the nodes_near query that last listed it
   unsigned node_query_ = 0;
   std::vector<unsigned> face_stamp_;  // by face: the passes() query that last tested it
@@ -385,9 +415,10 @@ constexpr std::size_t kProgressEvery = 256;
 }  // namespace
 
 RegionFront advance_front(std::vector<Vec3>& points, const std::vector<Tri>& faces,
-                          const FrontOptions& options, const Progress& progress) {
+                          const FrontOptions& options, const SizeField& field,
+                          const Progress& progress) {
   RegionFront out;
-  Front front(points, faces, options);
+  Front front(points, faces, options, field);
   out.aux_points = front.aux().initial;
   while (front.live_faces() > 0) {
     if (options.stop_after >= 0 && static_cast<long long>(out.tets.size()) >= options.stop_after)

@@ -4,13 +4,14 @@
 #include <array>
 #include <vector>
 
+#include "size_field.hpp"
 #include "volmesh/core/progress.hpp"
 #include "volmesh/core/types.hpp"
 #include "volmesh/tet_front/front.hpp"
 
 namespace volmesh::tet::front {
 
-// The paper's constants, for target edge h.
+// The paper's constants, for target edge h (the local size at the face or node).
 inline constexpr double kSolidAngleRadius = 1.4142135623730951;  // √2 h: the ball counted
 inline constexpr double kCandidateRadius = 1.7320508075688772;   // √3 h: fourth corners sought
 inline constexpr double kMaxVolume = 0.15;                       // Vmax = 0.15 h^3
@@ -24,8 +25,9 @@ struct RegionFront {
 };
 
 // Appends the new nodes to `points`. `faces` bound the region, each facing into it
-// (det(b - a, c - a, p - a) > 0 for p inside near the face).
+// (det(b - a, c - a, p - a) > 0 for p inside near the face); h is field's local size.
 RegionFront advance_front(std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& faces,
-                          const FrontOptions& options, const Progress& progress);
+                          const FrontOptions& options, const SizeField& field,
+                          const Progress& progress);
 
 }  // namespace volmesh::tet::front

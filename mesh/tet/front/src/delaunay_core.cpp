@@ -36,12 +36,13 @@ using Tet = std::array<Index, 4>;
 using Edge = std::array<Index, 2>;
 using Cell = std::array<long long, 3>;  // a lattice point's grid coordinates, at half the step
 
-// The lattice points inside the region at least `clearance` from its faces, in grid order:
+// The lattice points inside the region at least `clearance` from its faces (and, with a
+// graded field, where it has grown to h), in grid order:
 // the points of a grid of half the step whose three coordinates are all even (corners) or
 // all odd (centres).
 void lattice_points(const std::vector<Vec3>& points, const std::vector<Tri>& faces,
-                    double step, double clearance, std::vector<Vec3>& at,
-                    std::vector<Cell>& cells) {
+                    double step, double clearance, const SizeField* field, double h,
+                    std::vector<Vec3>& at, std::vector<Cell>& cells) {
   const AuxGrid grid = make_aux_grid(points, faces, step / 2.0);
   Triangles triangles;
   for (const Tri& t : faces) {
@@ -61,6 +62,7 @@ void lattice_points(const std::vector<Vec3>& points, const std::vector<Tri>& fac
         const Point q(x.x(), x.y(), x.z());
         hint = tree.closest_point(q, hint);
         if (CGAL::squared_distance(q, hint) < limit) continue;
+        if (field != nullptr && field->at(x) < h) continue;
         at.push_back(x);
         cells.push_back({i, j, k});
       }
@@ -201,11 +203,11 @@ void make_manifold(std::vector<Tet>& tets) {
 }  // namespace
 
 Core delaunay_core(const std::vector<Vec3>& points, const std::vector<Tri>& faces, double h,
-                   const Progress& progress) {
+                   const Progress& progress, const SizeField* field) {
   report(progress, "building the Delaunay interior", 0.0);
   std::vector<Vec3> at;
   std::vector<Cell> cells;
-  lattice_points(points, faces, kLatticeStep * h, kCoreClearance * h, at, cells);
+  lattice_points(points, faces, kLatticeStep * h, kCoreClearance * h, field, h, at, cells);
   std::vector<Tet> tets = lattice_tets(at, cells);
   make_manifold(tets);
   // The points of the tets kept, renumbered in the lattice's order.

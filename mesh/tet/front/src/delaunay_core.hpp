@@ -10,6 +10,8 @@
 #include "volmesh/core/progress.hpp"
 #include "volmesh/core/types.hpp"
 
+#include "size_field.hpp"
+
 namespace volmesh::tet::front {
 
 // The lattice's cube side over h: 2^(1/6), for which its tet (a twelfth of a cube) has the
@@ -36,9 +38,10 @@ struct Core {
 // tets around an edge or a vertex where its boundary would not be a 2-manifold are dropped.
 // Empty when no lattice tet fits. The same for the same input: the lattice is laid over the
 // faces' box, the points are inserted in a Hilbert order without randomness and the result
-// is ordered by the lattice.
+// is ordered by the lattice. With a graded size field (h its cap), only points where the
+// field has grown to h are kept, so the front grades from the boundary's size up to the core's.
 Core delaunay_core(const std::vector<Vec3>& points,
                    const std::vector<std::array<Index, 3>>& faces, double h,
-                   const Progress& progress);
+                   const Progress& progress, const SizeField* field = nullptr);
 
 }  // namespace volmesh::tet::front

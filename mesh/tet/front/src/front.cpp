@@ -12,6 +12,7 @@
 #include "delaunay_core.hpp"
 #include "fallback.hpp"
 #include "nesting.hpp"
+#include "size_field.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
 #include "volmesh/improve/improve.hpp"
@@ -59,9 +60,9 @@ improve::ImproveStats improve_front_mesh(TetMesh& m, const std::vector<Projectio
 // The region's Delaunay core into the mesh, its tets labelled `label`, and its boundary into
 // the region's front `faces` (facing away from the core). The core is a hole in the region as
 // the front sees it: the front's auxiliary points inside the core's boundary are never alive.
-void add_core(TetMesh& m, std::vector<Tri>& faces, Index label, double h,
+void add_core(TetMesh& m, std::vector<Tri>& faces, Index label, const front::SizeField& field,
               const Progress& progress, FrontStats& stats) {
-  const front::Core core = front::delaunay_core(m.points, faces, h, progress);
+  const front::Core core = front::delaunay_core(m.points, faces, field.cap(), progress, &field);
   const Index first = m.num_points();
   m.points.insert(m.points.end(), core.points.begin(), core.points.end());
   for (const auto& t : core.tets)
@@ -77,6 +78,28 @@ std::string text(double x) {
   out.precision(kDigits);
   out << x;
   return out.str();
+}
+
+// Refuses a graded size field whose auxiliary cells over the surfaces' box would hold more
+// points than fit in their memory.
+void require_front_cells(const std::vector<ProjectionSurface>& surfaces,
+                         const std::vector<Vec3>& points, const std::vector<Tri>& triangles,
+                         const front::SizeField& field, int aux_ratio) {
+  Vec3 lo = points[triangles.front()[0]], hi = lo;
+  for (const Tri& t : triangles)
+    for (const Index v : t) {
+      lo = lo.cwiseMin(points[v]);
+      hi = hi.cwiseMax(points[v]);
+    }
+  const double needed = front::aux_points_needed(lo, hi, field, aux_ratio);
+  if (needed <= front::kMaxAuxPoints) return;
+  throw InputError("tet-front: " +
+                   (surfaces.size() == 1 ? surfaces.front().name : std::string("its surfaces")) +
+                   ": the graded sizes (from " + text(field.min()) + " at the boundary to " +
+                   text(field.cap()) + ") need more than " + text(front::kMaxAuxPoints) +
+                   " auxiliary points at --aux-ratio " + std::to_string(aux_ratio) +
+                   ", more than fit in " + text(front::kMaxAuxBytes / kGiB) +
+                   " GiB; a coarser boundary or a larger --interior-size needs fewer");
 }
 
 }  // namespace
@@ -107,6 +130,18 @@ void require_front_size(const std::string& name, double h, int aux_ratio, const 
                    text(std::ceil(large / unit) * unit));
 }
 
+void require_front_interior_size(const std::string& name, double interior, double h,
+                                 const Vec3& lo, const Vec3& hi) {
+  const std::string head = "tet-front: " + name + ": --interior-size " + text(interior);
+  if (!(interior > 0.0) || !std::isfinite(interior))
+    throw InputError(head + " is not a positive, finite length");
+  if (interior < h) throw InputError(head + " is smaller than --size " + text(h));
+  const double diagonal = (hi - lo).norm();
+  if (interior > diagonal)
+    throw InputError(head + " is absurd: longer than the boundary's bounding-box diagonal, " +
+                     text(diagonal) + ", the largest size allowed");
+}
+
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress) {
   FrontResult r;
@@ -128,7 +163,19 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     }
     require_front_size(surfaces.size() == 1 ? surfaces.front().name : "its surfaces",
                        options.size, options.aux_ratio, lo, hi);
+    if (options.interior_size != 0.0)
+      require_front_interior_size(surfaces.size() == 1 ? surfaces.front().name : "its surfaces",
+                                  options.interior_size, options.size, lo, hi);
   }
+  // The local size, from every surface's triangles; the auxiliary cells of all the surfaces'
+  // box must fit.
+  std::vector<Tri> all;
+  for (const auto& tris : outward) all.insert(all.end(), tris.begin(), tris.end());
+  const front::SizeField field(m.points, all, options.size, options.interior_size);
+  r.stats.size_min = field.min();
+  r.stats.size_max = field.cap();
+  r.stats.grading_rate = field.rate();
+  if (!all.empty()) require_front_cells(surfaces, m.points, all, field, options.aux_ratio);
   const std::vector<Index> parent = front::parents(m.points, outward);
   const double front_share = options.improve ? 1.0 - kImproveShare : 1.0;
   double interior_seconds = 0.0, front_seconds = 0.0, fallback_seconds = 0.0;
@@ -145,11 +192,11 @@ FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfac
     const Progress part = part_of(progress, begin, begin + front_share / double(surfaces.size()),
                                   surfaces[s].name + ": ");
     if (options.interior == Interior::delaunay) {
-      add_core(m, faces, static_cast<Index>(s), options.size, part, r.stats);
+      add_core(m, faces, static_cast<Index>(s), field, part, r.stats);
       interior_seconds += seconds_since(clock);
     }
     const auto front_clock = Clock::now();
-    front::RegionFront region = front::advance_front(m.points, faces, options, part);
+    front::RegionFront region = front::advance_front(m.points, faces, options, field, part);
     r.stats.front_tets += static_cast<long long>(region.tets.size());
     r.stats.new_nodes += region.new_nodes;
     r.stats.existing_node_tets += region.existing_node_tets;

@@ -3,8 +3,12 @@
 // "tet-front"): fills closed, outward, non-self-intersecting triangulated surfaces with tets
 // of target edge h, keeping the surface triangles (a fallback cut may split one: counted).
 //
+// h is local (graded): near the boundary the boundary triangles' mean edge, growing inward by
+// a quarter of the distance up to the target size (FrontOptions::size, or interior_size).
+//
 // Each region (the inside of its surfaces, outside the ones nested in it) is meshed on its own:
-//  - auxiliary points on a grid of step h/n, one bit each, alive inside the region;
+//  - auxiliary points at step h/n (an octree of cells about h wide, n^3 points each), one bit
+//    each, alive inside the region;
 //  - the front starts as the region's boundary triangles, facing into the region;
 //  - the front node with the fewest live auxiliary points within √2·h (the smallest solid
 //    angle) is taken, then its front face with the least sum over its corners;
@@ -52,6 +56,8 @@ struct FrontOptions {
   long long stop_after = -1;
   bool improve = true;  // improve the finished mesh (volmesh/improve/improve.hpp)
   Interior interior = Interior::front;
+  // Graded sizes: the size grows inward from the boundary's up to this (0: up to `size`).
+  double interior_size = 0.0;
 };
 
 struct FrontStats {
@@ -78,6 +84,9 @@ struct FrontStats {
   long long split_boundary_faces = 0;
   long long steiner_points = 0;
   ::volmesh::improve::ImproveStats improve;  // the last pass (empty when FrontOptions::improve is off)
+  // The local size h(x) (graded from the boundary triangles): its least and largest values
+  // and its growth per unit distance from the boundary (0 when uniform).
+  double size_min = 0.0, size_max = 0.0, grading_rate = 0.0;
   // Seconds by stage: interior, front, fallback.
   std::vector<std::pair<std::string, double>> seconds;
 };
@@ -97,7 +106,14 @@ struct FrontResult {
 void require_front_size(const std::string& name, double h, int aux_ratio, const Vec3& lo,
                         const Vec3& hi);
 
-// Throws InputError as require_front_size does, or when no direction closes a stalled cavity.
+// Refuses (InputError "tet-front: <name>: --interior-size <H> ...") an interior size that is not
+// a positive finite length, is below the size h, or exceeds the diagonal of the box [lo, hi].
+void require_front_interior_size(const std::string& name, double interior, double h,
+                                 const Vec3& lo, const Vec3& hi);
+
+// Throws InputError as require_front_size and require_front_interior_size do, when the
+// graded auxiliary points would not fit in their memory, or when no direction closes a
+// stalled cavity.
 FrontResult tetrahedralize_by_front(const std::vector<ProjectionSurface>& surfaces,
                                     const FrontOptions& options, const Progress& progress = {});
 
