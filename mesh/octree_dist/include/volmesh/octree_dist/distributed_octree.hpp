@@ -40,8 +40,8 @@ struct DistributedOctree {
   // This rank's leaves, in Morton order; every rank's stretch follows the previous rank's.
   std::vector<OctreeLeaf> leaves;
   // Per leaf: it lies on the domain's boundaries or interfaces (its corners in different
-  // regions or an edge crossed, build_octree's criterion). The partition weighs such leaves
-  // heavier: the meshers do most of their work in them.
+  // regions; or, for a leaf the refinement asked, an edge crossed: build_octree's criterion).
+  // The partition weighs such leaves heavier: the meshers do most of their work in them.
   std::vector<std::uint8_t> cut;
   // The other ranks' leaves that share a face, an edge or a corner with one of this rank's,
   // and with ghost_layers > 1 those touching them in turn, layer by layer: in Morton order,
