@@ -53,21 +53,7 @@ TEST_F(CliCutcellPieces, SolvesOnThePiecesMatchSerial) {
     const auto s = run_volmesh("solve " + c + " --solver petsc --json -o " + (dir / "serial.vtu").string(), dir);
     ASSERT_EQ(s.exit_code, 0) << s.err;
     const auto expected = nlohmann::json::parse(s.out);
-    for (const int ranks : test::kRankCounts) {
-      SCOPED_TRACE(ranks);
-      const fs::path out = dir / ("u" + std::to_string(ranks) + ".pvtu");
-      const auto r = run_mpi(ranks, "solve " + c + " --json -o " + out.string(), dir);
-      ASSERT_EQ(r.exit_code, 0) << r.err;
-      const auto j = nlohmann::json::parse(r.out);
-      EXPECT_EQ(j["partition"], "octree");
-      for (const char* count : {"cells", "points", "dofs", "unknowns"})
-        EXPECT_EQ(j[count], expected[count]) << count;
-      for (const char* norm : {"l2", "h1", "linf"})
-        EXPECT_LE(test::relative(j["errors"][norm].get<double>(), expected["errors"][norm].get<double>()),
-                  test::kSolutionAgreement)
-            << norm;
-      EXPECT_EQ(pvtu_piece_files(out).size(), std::size_t(ranks));
-    }
+    for (const int ranks : test::kRankCounts) test::expect_solve_on_ranks(c, ranks, expected, dir);
   }
 }
 
@@ -76,16 +62,8 @@ TEST_F(CliCutcellPieces, AFixedRankCountGivesTheSameBytes) {
   if (!test::pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
   constexpr int kRanks = 2;
   for (const std::string run : {"mesh cutcell builtin:primitives --level 4 -o ",
-                                "solve poisson --problem sine --method cutcell --level 4 -o "}) {
-    SCOPED_TRACE(run);
-    for (const std::string name : {"a", "b"})
-      ASSERT_EQ(run_mpi(kRanks, run + (dir / (name + ".pvtu")).string(), dir).exit_code, 0);
-    for (int piece = 0; piece < kRanks; ++piece) {
-      const std::string a = test::slurp(dir / "a" / ("a_" + std::to_string(piece) + ".vtu"));
-      EXPECT_FALSE(a.empty());
-      EXPECT_TRUE(a == test::slurp(dir / "b" / ("b_" + std::to_string(piece) + ".vtu"))) << piece;
-    }
-  }
+                                "solve poisson --problem sine --method cutcell --level 4 -o "})
+    test::expect_same_bytes(run, kRanks, dir);
 }
 
 TEST_F(CliCutcellPieces, AFailureOnOneRankWhileMeshingEndsEveryRank) {

@@ -21,9 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::expect_same_mesh;
 using test::kRankCounts;
-using test::kRoundingErrors;
 using test::pieces_built;
-using test::relative;
 using test::run_mpi;
 using test::run_volmesh;
 
@@ -59,16 +57,7 @@ TEST_F(CliPieces, AFixedRankCountGivesTheSameBytes) {
       "mesh staircase builtin:ball --level 5 -o ",
       "solve poisson --problem sine --method staircase --domain builtin:ball --level 4 -o "};
   constexpr int kRanks = 2;
-  for (const std::string& run : runs) {
-    SCOPED_TRACE(run);
-    for (const std::string name : {"a", "b"})
-      ASSERT_EQ(run_mpi(kRanks, run + (dir / (name + ".pvtu")).string(), dir).exit_code, 0);
-    for (int piece = 0; piece < kRanks; ++piece) {
-      const std::string a = test::slurp(dir / "a" / ("a_" + std::to_string(piece) + ".vtu"));
-      EXPECT_FALSE(a.empty());
-      EXPECT_TRUE(a == test::slurp(dir / "b" / ("b_" + std::to_string(piece) + ".vtu"))) << piece;
-    }
-  }
+  for (const std::string& run : runs) test::expect_same_bytes(run, kRanks, dir);
 }
 
 // The serial solve's figures (PETSc's CG, as under mpirun) against every rank count's, and
@@ -88,20 +77,7 @@ TEST_F(CliPieces, SolvesOnThePiecesMatchSerial) {
     ASSERT_EQ(s.exit_code, 0) << s.err;
     const auto expected = nlohmann::json::parse(s.out);
     for (const int ranks : kRankCounts) {
-      SCOPED_TRACE(ranks);
-      const fs::path out = dir / ("u" + std::to_string(ranks) + ".pvtu");
-      const auto r = run_mpi(ranks, "solve " + c + " --json -o " + out.string(), dir);
-      ASSERT_EQ(r.exit_code, 0) << r.err;
-      const auto j = nlohmann::json::parse(r.out);
-      EXPECT_EQ(j["partition"], "octree");
-      for (const char* count : {"cells", "points", "dofs", "unknowns"})
-        EXPECT_EQ(j[count], expected[count]) << count;
-      for (const char* norm : {"l2", "h1", "linf"}) {
-        const double e = expected["errors"][norm].get<double>();
-        if (e > kRoundingErrors)
-          EXPECT_LE(relative(j["errors"][norm].get<double>(), e), test::kSolutionAgreement) << norm;
-      }
-      EXPECT_EQ(pvtu_piece_files(out).size(), std::size_t(ranks));
+      const fs::path out = test::expect_solve_on_ranks(c, ranks, expected, dir);
       // The grid's pieces keep the serial numbers: point by point through VTK's readers.
       if (c.find("grid") != std::string::npos)
         test::expect_same_solution(test::compare_files(serial, out));

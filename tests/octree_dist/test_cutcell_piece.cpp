@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gather.hpp"
+#include "octree_case.hpp"
 #include "pieces_match.hpp"
 #include "volmesh/core/validity.hpp"
 #include "volmesh/cutcell/cutcell.hpp"
@@ -24,10 +25,7 @@ namespace {
 // Region volumes summed in another order agree to rounding.
 constexpr double kVolumeAgreement = 1e-10;
 
-struct Case {
-  std::string domain;
-  int level, base_level, cells_between_levels;
-};
+using test::Case;
 
 // Every number in 0 .. count - 1 exactly once over the ranks (a point: once per owner).
 bool numbered_once(const std::vector<std::int64_t>& mine, std::int64_t count) {
@@ -51,9 +49,7 @@ TEST(CutcellPiece, PiecesMakeTheSerialMesh) {
     SCOPED_TRACE(c.domain + " level " + std::to_string(c.level));
     const std::unique_ptr<Domain> domain = open_domain(c.domain);
     CutcellOptions options;
-    options.octree.level = c.level;
-    options.octree.base_level = c.base_level;
-    options.octree.cells_between_levels = c.cells_between_levels;
+    options.octree = test::options_of(c);
     const RankPiece piece = cutcell_piece(*domain, options);
     const PolyMesh serial = cutcell_mesh(*domain, options);
 

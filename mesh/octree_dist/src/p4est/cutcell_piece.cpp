@@ -53,12 +53,15 @@ std::vector<Vec3> lowest_vertices(const PolyMesh& mesh) {
 RankPiece cutcell_piece(const Domain& domain, const CutcellOptions& options) {
   const DistributedOctree distributed = build_distributed_octree(domain, options.octree, kCutcellGhostLayers);
   const std::vector<std::uint64_t> starts = stretch_starts(distributed);
-  Octree tree(distributed.root.origin, distributed.root.side, octree_dist::local_tree(distributed).leaves);
-  balance(tree);
+  PolyMesh whole;  // a rank without leaves (more ranks than leaves) keeps no cell
+  if (!distributed.leaves.empty()) {
+    Octree tree(distributed.root.origin, distributed.root.side, octree_dist::local_tree(distributed).leaves);
+    balance(tree);
+    CutcellOptions window = options;
+    window.progress = nullptr;  // the ranks' progress is rank 0's line, not the pipeline's stages
+    whole = cutcell_mesh_of_tree(std::move(tree), domain, window);
+  }
   const Octree frame(distributed.root.origin, distributed.root.side);  // for cell_code
-  CutcellOptions window = options;
-  window.progress = nullptr;  // the ranks' progress is rank 0's line, not the pipeline's stages
-  const PolyMesh whole = cutcell_mesh_of_tree(std::move(tree), domain, window);
 
   const std::vector<Vec3> lowest = lowest_vertices(whole);
   std::vector<Index> cell_part(whole.num_cells());
