@@ -17,9 +17,11 @@
 #      at PIECES_LEVEL (7); the cut cells' mesh alone is the solve's (uniform to the level);
 #   6. a convergence study on 2 ranks against the serial one (study convergence --np 2, levels
 #      STUDY_LEVELS, 3..6), cut cells and staircase: the slopes;
-#   7. the cut-cell solve at LARGE_LEVEL (8) on 2 ranks: each rank's peak memory and the stages.
+#   7. the cut-cell solve at LARGE_LEVEL (8) on 2 ranks: each rank's peak memory and the stages;
+#   8. the messages and bytes the 2 ranks of the cut-cell pieces send at PIECES_LEVEL, meshing
+#      alone and the whole solve.
 # SECTIONS (all) picks some of them: "pieces" (section 5; "staircase" or "cutcell" for one
-# method), "study" (6), "large" (7), e.g. SECTIONS="cutcell study".
+# method), "study" (6), "large" (7), "traffic" (8), e.g. SECTIONS="cutcell study".
 # DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶), LEVELS ("4 5 6 7")
 # and ELASTICITY_LEVEL (6, ~2.8·10⁵ unknowns) choose the cases. Prints the report and writes
 # it to $OUT/report.md (OUT=dir, default build/validation-distributed).
@@ -133,6 +135,37 @@ print("| seconds (slowest rank) | " + " | ".join(f"{v:.2f}" for v in j["seconds_
 PY
 }
 
+# Section 8: what the ranks send, for the cut-cell pieces at PIECES_LEVEL on 2 ranks: meshing
+# alone, then the whole solve (Open MPI's monitoring components: messages and bytes per peer,
+# point to point and inside the collectives).
+traffic() {
+  local dir=$OUT/traffic
+  mkdir -p "$dir"
+  local monitor="--mca pml_monitoring_enable 2 --mca pml_monitoring_enable_output 3"
+  $MPIRUN -np 2 $monitor --mca pml_monitoring_filename "$dir/mesh" "$VOLMESH" mesh cutcell "$DOMAIN" \
+    --level "$PIECES_LEVEL" --base-level "$PIECES_LEVEL" -o "$dir/mesh.pvtu" --quiet > /dev/null
+  $MPIRUN -np 2 $monitor --mca pml_monitoring_filename "$dir/solve" "$VOLMESH" solve poisson \
+    --problem sine --method cutcell --domain "$DOMAIN" --level "$PIECES_LEVEL" -o "$dir/u.pvtu" \
+    --quiet > /dev/null
+  /usr/bin/python3 - "$dir" <<'PY' | tee "$OUT/traffic.md"
+import sys
+d = sys.argv[1]
+print("| command | rank | point-to-point messages | point-to-point MB | collectives' messages | collectives' MB |")
+print("|---|---|---|---|---|---|")
+for what in ("mesh", "solve"):
+    for r in (0, 1):
+        p2p = [0, 0]
+        coll = [0, 0]
+        for line in open(f"{d}/{what}.{r}.prof"):
+            f = line.split("\t")
+            if f[0] in ("E", "C") and f[1] != f[2]:
+                into = p2p if f[0] == "E" else coll
+                into[0] += int(f[4].split()[0])
+                into[1] += int(f[3].split()[0])
+        print(f"| {what} | {r} | {p2p[0]} | {p2p[1] / 1e6:.2f} | {coll[0]} | {coll[1] / 1e6:.2f} |")
+PY
+}
+
 case " ${SECTIONS:-all} " in
   *" all "*) ;;
   *)
@@ -142,7 +175,9 @@ case " ${SECTIONS:-all} " in
         staircase | cutcell) pieces $section ;;
         study) study ;;
         large) large ;;
-        *) echo "SECTIONS: unknown section $section (pieces, staircase, cutcell, study, large)" >&2; exit 2 ;;
+        traffic) traffic ;;
+        *) echo "SECTIONS: unknown section $section (pieces, staircase, cutcell, study, large, traffic)" >&2
+           exit 2 ;;
       esac
     done
     exit 0 ;;
@@ -269,3 +304,4 @@ pieces staircase
 pieces cutcell
 study
 large
+traffic
