@@ -10,9 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "pieces_checks.hpp"
 #include "pvtu_compare.hpp"
-#include "run_mpi.hpp"
-#include "volmesh/core/validity.hpp"
 #include "volmesh/io/mesh_io.hpp"
 #include "volmesh/io/partitioned_io.hpp"
 
@@ -20,37 +19,13 @@ namespace volmesh {
 namespace {
 
 namespace fs = std::filesystem;
+using test::expect_same_mesh;
+using test::kRankCounts;
+using test::pieces_built;
 using test::run_mpi;
 using test::run_volmesh;
 
 using CliPieces = test::MpiTest;
-
-const std::vector<int> kRankCounts{1, 2, 4};
-// Volumes summed in another order agree to rounding.
-constexpr double kVolumeAgreement = 1e-10;
-// Error norms below this are rounding (a patch test's): compared point by point only.
-constexpr double kRoundingErrors = 1e-8;
-
-bool pieces_built(const fs::path& dir) {
-  const std::string version = run_volmesh("--version", dir).out;
-  return test::petsc_built(dir) && version.find("p4est 2") != std::string::npos;
-}
-
-double relative(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
-
-void expect_same_mesh(const PolyMesh& serial, const fs::path& pvtu, int ranks) {
-  EXPECT_EQ(pvtu_piece_files(pvtu).size(), std::size_t(ranks));
-  const PolyMesh whole = read_mesh(pvtu);  // the pieces stitched by their global ids
-  const ValidityReport a = check_validity(serial), b = check_validity(whole);
-  EXPECT_TRUE(b.valid()) << (b.problems.empty() ? "" : b.problems.front());
-  EXPECT_EQ(whole.num_cells(), serial.num_cells());
-  EXPECT_EQ(whole.num_points(), serial.num_points());
-  EXPECT_EQ(whole.num_faces(), serial.num_faces());
-  EXPECT_LE(relative(b.total_volume, a.total_volume), kVolumeAgreement);
-  ASSERT_EQ(b.region_volume.size(), a.region_volume.size());
-  for (const auto& [region, volume] : a.region_volume)
-    EXPECT_LE(relative(b.region_volume.at(region), volume), kVolumeAgreement) << region;
-}
 
 TEST_F(CliPieces, MeshPiecesMakeTheSerialMesh) {
   const fs::path dir = test::scratch_dir("pieces-mesh");
@@ -82,16 +57,7 @@ TEST_F(CliPieces, AFixedRankCountGivesTheSameBytes) {
       "mesh staircase builtin:ball --level 5 -o ",
       "solve poisson --problem sine --method staircase --domain builtin:ball --level 4 -o "};
   constexpr int kRanks = 2;
-  for (const std::string& run : runs) {
-    SCOPED_TRACE(run);
-    for (const std::string name : {"a", "b"})
-      ASSERT_EQ(run_mpi(kRanks, run + (dir / (name + ".pvtu")).string(), dir).exit_code, 0);
-    for (int piece = 0; piece < kRanks; ++piece) {
-      const std::string a = test::slurp(dir / "a" / ("a_" + std::to_string(piece) + ".vtu"));
-      EXPECT_FALSE(a.empty());
-      EXPECT_TRUE(a == test::slurp(dir / "b" / ("b_" + std::to_string(piece) + ".vtu"))) << piece;
-    }
-  }
+  for (const std::string& run : runs) test::expect_same_bytes(run, kRanks, dir);
 }
 
 // The serial solve's figures (PETSc's CG, as under mpirun) against every rank count's, and
@@ -111,20 +77,7 @@ TEST_F(CliPieces, SolvesOnThePiecesMatchSerial) {
     ASSERT_EQ(s.exit_code, 0) << s.err;
     const auto expected = nlohmann::json::parse(s.out);
     for (const int ranks : kRankCounts) {
-      SCOPED_TRACE(ranks);
-      const fs::path out = dir / ("u" + std::to_string(ranks) + ".pvtu");
-      const auto r = run_mpi(ranks, "solve " + c + " --json -o " + out.string(), dir);
-      ASSERT_EQ(r.exit_code, 0) << r.err;
-      const auto j = nlohmann::json::parse(r.out);
-      EXPECT_EQ(j["partition"], "octree");
-      for (const char* count : {"cells", "points", "dofs", "unknowns"})
-        EXPECT_EQ(j[count], expected[count]) << count;
-      for (const char* norm : {"l2", "h1", "linf"}) {
-        const double e = expected["errors"][norm].get<double>();
-        if (e > kRoundingErrors)
-          EXPECT_LE(relative(j["errors"][norm].get<double>(), e), test::kSolutionAgreement) << norm;
-      }
-      EXPECT_EQ(pvtu_piece_files(out).size(), std::size_t(ranks));
+      const fs::path out = test::expect_solve_on_ranks(c, ranks, expected, dir);
       // The grid's pieces keep the serial numbers: point by point through VTK's readers.
       if (c.find("grid") != std::string::npos)
         test::expect_same_solution(test::compare_files(serial, out));
@@ -154,14 +107,14 @@ TEST_F(CliPieces, AFailureOnOneRankInAnyStageEndsEveryRank) {
 }
 
 // What has no pieces takes the rank-0 path, saying so on one line.
-TEST_F(CliPieces, CutCellsAndVtuOutputsTakeTheRankZeroPath) {
+TEST_F(CliPieces, MethodsWithoutPiecesAndVtuOutputsTakeTheRankZeroPath) {
   const fs::path dir = test::scratch_dir("pieces-rank-zero");
   if (!pieces_built(dir)) GTEST_SKIP() << "built without PETSc or p4est";
   const fs::path out = dir / "c.pvtu";
-  const auto c = run_mpi(2, "solve poisson --problem sine --method cutcell --level 3 --json -o " +
+  const auto c = run_mpi(2, "solve poisson --problem sine --method hexdc --level 3 --partition octree --json -o " +
                                 out.string(), dir);
   ASSERT_EQ(c.exit_code, 0) << c.err;
-  EXPECT_NE(c.err.find("note: cutcell does not mesh in pieces: rank 0 meshes, METIS partitions"),
+  EXPECT_NE(c.err.find("note: hexdc does not mesh in pieces: rank 0 meshes, METIS partitions"),
             std::string::npos)
       << c.err;
   EXPECT_EQ(nlohmann::json::parse(c.out)["partition"], "metis");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gather.hpp"
+#include "octree_case.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/octree_dist/distributed_octree.hpp"
@@ -40,18 +41,8 @@ std::unique_ptr<Domain> domain_or_null(const std::string& spec) {
   return nullptr;
 }
 
-struct Case {
-  std::string domain;
-  int level, base_level, cells_between_levels;
-};
-
-OctreeOptions options_of(const Case& c) {
-  OctreeOptions o;
-  o.level = c.level;
-  o.base_level = c.base_level;
-  o.cells_between_levels = c.cells_between_levels;
-  return o;
-}
+using test::Case;
+using test::options_of;
 
 // The gathered leaves equal the serial tree's, leaf for leaf in Morton order.
 void expect_serial_leaves(const DistributedOctree& tree, const Octree& serial, const std::string& what) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "octree_case.hpp"
 #include "pieces_match.hpp"
 #include "volmesh/io/open_domain.hpp"
 #include "volmesh/octree/staircase.hpp"
@@ -14,10 +15,7 @@
 namespace volmesh {
 namespace {
 
-struct Case {
-  std::string domain;
-  int level, base_level, cells_between_levels;
-};
+using test::Case;
 
 TEST(StaircasePiece, PiecesMakeTheSerialMesh) {
   const std::vector<Case> cases{{"builtin:ball", 5, 3, 1}, {"builtin:primitives", 5, 3, 2},
@@ -26,9 +24,7 @@ TEST(StaircasePiece, PiecesMakeTheSerialMesh) {
     SCOPED_TRACE(c.domain + " level " + std::to_string(c.level));
     const std::unique_ptr<Domain> domain = open_domain(c.domain);
     StaircaseOptions options;
-    options.octree.level = c.level;
-    options.octree.base_level = c.base_level;
-    options.octree.cells_between_levels = c.cells_between_levels;
+    options.octree = test::options_of(c);
     const RankPiece piece = staircase_piece(build_distributed_octree(*domain, options.octree), *domain);
     const PolyMesh serial = staircase_mesh(*domain, options);
 

@@ -3,13 +3,13 @@
 in DIR and prints the report: the pieces of 1, 2 and 4 ranks through VTK's PVTU reader
 (vtkXMLPUnstructuredGridReader, cell volumes by vtkCellSizeFilter) against the serial mesh
 through VTK's VTU reader, the solutions against the serial one, each process's peak memory and
-the meshing time. Usage: pieces.py DIR LEVEL"""
+the meshing time. Usage: pieces.py DIR LEVEL METHOD MESHING (the meshing command measured)"""
 import json
 import sys
 
 import vtk
 
-out, level = sys.argv[1], sys.argv[2]
+out, level, method, meshing = sys.argv[1:5]
 RANKS = (1, 2, 4)
 
 
@@ -46,7 +46,7 @@ def peak_mb(path):
 
 
 cells, serial, _ = volumes(f"{out}/mesh.vtu", vtk.vtkXMLUnstructuredGridReader())
-print(f"## The same mesh: staircase, level 5 (graded), serial {cells} cells\n")
+print(f"## The same mesh: {method}, level 5 (graded), serial {cells} cells\n")
 print("| ranks | cells (PVTU reader) | every global cell id once | largest relative region-volume difference |")
 print("|---|---|---|---|")
 for np in RANKS:
@@ -56,7 +56,7 @@ for np in RANKS:
     print(f"| {np} | {n} | {once} | {worst:.1e} |")
 
 u = load("u.json")
-print(f"\n## The same solution: sine on the staircase mesh, level 5, {u['unknowns']} unknowns\n")
+print(f"\n## The same solution: sine on the {method} mesh, level 5, {u['unknowns']} unknowns\n")
 print("| ranks | partition | unknowns | iterations | L2 error | relative difference of L2, H1, Linf | "
       "grid level 5, largest difference of u |")
 print("|---|---|---|---|---|---|---|")
@@ -71,8 +71,8 @@ big1, big2 = load("big-serial.json"), load("big-2.json")
 print(f"\n## Peak memory per process: level {level}, {big1['cells']} cells, {big1['unknowns']} unknowns\n")
 print("| command | one process MB | rank 0 MB | rank 1 MB | largest rank / one process |")
 print("|---|---|---|---|---|")
-for name, what in (("solve", f"solve poisson --problem sine --method staircase --level {level}"),
-                   ("mesh", f"mesh staircase --level {level}")):
+for name, what in (("solve", f"solve poisson --problem sine --method {method} --level {level}"),
+                   ("mesh", meshing)):
     one = peak_mb(f"{out}/rss-{name}-serial")
     ranks = [peak_mb(f"{out}/rss-{name}-2.{r}") for r in (0, 1)]
     print(f"| {what} | {one:.0f} | {ranks[0]:.0f} | {ranks[1]:.0f} | {max(ranks) / one:.2f} |")
@@ -81,9 +81,9 @@ mesh1, mesh2 = load("bigmesh-serial.json"), load("bigmesh-2.json")
 print(f"\n## Time: level {level}\n")
 print("| | one process s | 2 ranks s (slowest rank) | 2 ranks / one |")
 print("|---|---|---|---|")
-print(f"| mesh staircase: meshing | {mesh1['time_seconds']:.2f} | {mesh2['time_seconds']:.2f} | "
+print(f"| {meshing}: meshing | {mesh1['time_seconds']:.2f} | {mesh2['time_seconds']:.2f} | "
       f"{mesh2['time_seconds'] / mesh1['time_seconds']:.2f} |")
-print(f"| mesh staircase: whole command | {mesh1['total_seconds']:.2f} | {mesh2['total_seconds']:.2f} | "
+print(f"| {meshing}: whole command | {mesh1['total_seconds']:.2f} | {mesh2['total_seconds']:.2f} | "
       f"{mesh2['total_seconds'] / mesh1['total_seconds']:.2f} |")
 stages = ["mesh", "setup", "assembly", "preconditioner", "solve", "errors", "write", "total"]
 for k in stages:

@@ -10,11 +10,18 @@
 #      with our BoomerAMG defaults and with the classical tuning; ours is compared with the
 #      faster setting of each;
 #   4. elasticity on one rank: hypre nodal with our defaults and two variants, and GAMG;
-#   5. meshing and solving in pieces (--partition octree; pieces.py): the pieces of 1, 2 and 4
-#      ranks against the serial mesh through VTK's PVTU reader (cells, region volumes) and
-#      the solution against the serial one; each rank's peak memory (/usr/bin/time) and the
-#      meshing time on 2 ranks against one process, at PIECES_LEVEL (7).
-# SECTIONS=pieces runs section 5 alone.
+#   5. meshing and solving in pieces (--partition octree; pieces.py), for the staircase and
+#      the cut-cell methods: the pieces of 1, 2 and 4 ranks against the serial mesh through
+#      VTK's PVTU reader (cells, region volumes) and the solution against the serial one; each
+#      rank's peak memory (/usr/bin/time) and the meshing time on 2 ranks against one process,
+#      at PIECES_LEVEL (7); the cut cells' mesh alone is the solve's (uniform to the level);
+#   6. a convergence study on 2 ranks against the serial one (study convergence --np 2, levels
+#      STUDY_LEVELS, 3..6), cut cells and staircase: the slopes;
+#   7. the cut-cell solve at LARGE_LEVEL (8) on 2 ranks: each rank's peak memory and the stages;
+#   8. the messages and bytes the 2 ranks of the cut-cell pieces send at PIECES_LEVEL, meshing
+#      alone and the whole solve.
+# SECTIONS (all) picks some of them: "pieces" (section 5; "staircase" or "cutcell" for one
+# method), "study" (6), "large" (7), "traffic" (8), e.g. SECTIONS="cutcell study".
 # DOMAIN (builtin:ball), LEVEL (7, ~0.9·10⁶ unknowns; 8 gives ~7·10⁶), LEVELS ("4 5 6 7")
 # and ELASTICITY_LEVEL (6, ~2.8·10⁵ unknowns) choose the cases. Prints the report and writes
 # it to $OUT/report.md (OUT=dir, default build/validation-distributed).
@@ -39,29 +46,32 @@ if [ ! -x "$VOLMESH" ]; then
 fi
 "$VOLMESH" --version | grep -q PETSc || { echo "volmesh was built without PETSc" >&2; exit 1; }
 
-# Section 5: meshing and solving in pieces.
+# Section 5: meshing and solving in pieces, for one method ($1: staircase or cutcell).
 PIECES_LEVEL=${PIECES_LEVEL:-7}
 pieces() {
-  local dir=$OUT/pieces
+  local method=$1
+  local dir=$OUT/pieces-$method
   mkdir -p "$dir"
   "$VOLMESH" --version | grep -q "p4est 2" || { echo "volmesh was built without p4est" >&2; exit 1; }
   # The same mesh and solution on 1, 2 and 4 ranks (4 oversubscribed here).
-  local mesh="staircase $DOMAIN --level 5" solve="poisson --problem sine --domain $DOMAIN --level 5"
+  local mesh="$method $DOMAIN --level 5" solve="poisson --problem sine --domain $DOMAIN --level 5"
+  [ "$method" = staircase ] && mesh="$mesh --base-level 3"
   "$VOLMESH" mesh $mesh -o "$dir/mesh.vtu" --quiet > /dev/null
-  "$VOLMESH" solve $solve --method staircase --solver petsc -o "$dir/u.vtu" --json --quiet > "$dir/u.json"
+  "$VOLMESH" solve $solve --method $method --solver petsc -o "$dir/u.vtu" --json --quiet > "$dir/u.json"
   "$VOLMESH" solve poisson --problem sine --method grid --level 5 --solver petsc -o "$dir/g.vtu" \
     --quiet > /dev/null
   for np in 1 2 4; do
     $MPIRUN -np $np "$VOLMESH" mesh $mesh -o "$dir/mesh$np.pvtu" --quiet > /dev/null
-    $MPIRUN -np $np "$VOLMESH" solve $solve --method staircase -o "$dir/u$np.pvtu" --json --quiet \
+    $MPIRUN -np $np "$VOLMESH" solve $solve --method $method -o "$dir/u$np.pvtu" --json --quiet \
       > "$dir/u$np.json"
     $MPIRUN -np $np "$VOLMESH" solve poisson --problem sine --method grid --level 5 \
       -o "$dir/g$np.pvtu" --quiet > /dev/null
     /usr/bin/python3 tests/apps/external/pvtu_compare.py "$dir/g.vtu" "$dir/g$np.pvtu" > "$dir/g$np.cmp.json"
   done
   # Peak memory per process and time: one process, then each of 2 ranks (its own time file).
-  local big="solve poisson --problem sine --method staircase --domain $DOMAIN --level $PIECES_LEVEL"
-  local meshing="mesh staircase $DOMAIN --level $PIECES_LEVEL"
+  local big="solve poisson --problem sine --method $method --domain $DOMAIN --level $PIECES_LEVEL"
+  local meshing="mesh $method $DOMAIN --level $PIECES_LEVEL"
+  [ "$method" = cutcell ] && meshing="$meshing --base-level $PIECES_LEVEL"
   /usr/bin/time -v -o "$dir/rss-solve-serial" "$VOLMESH" $big -o "$dir/big.vtu" --json --quiet \
     > "$dir/big-serial.json"
   $MPIRUN -np 2 sh -c 'exec /usr/bin/time -v -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' "$dir/rss-solve-2" \
@@ -70,12 +80,108 @@ pieces() {
     > "$dir/bigmesh-serial.json"
   $MPIRUN -np 2 sh -c 'exec /usr/bin/time -v -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' "$dir/rss-mesh-2" \
     "$VOLMESH" $meshing -o "$dir/bigmesh.pvtu" --json --quiet > "$dir/bigmesh-2.json"
-  /usr/bin/python3 validation/distributed/pieces.py "$dir" "$PIECES_LEVEL" | tee "$OUT/pieces.md"
+  echo "load average before and after: $(cut -d' ' -f1-3 /proc/loadavg)" >> "$dir/load"
+  /usr/bin/python3 validation/distributed/pieces.py "$dir" "$PIECES_LEVEL" "$method" "$meshing" \
+    | tee "$OUT/pieces-$method.md"
 }
-if [ "${SECTIONS:-all}" = pieces ]; then
-  pieces
-  exit 0
-fi
+
+# Section 6: convergence studies on 2 ranks against serial ones.
+STUDY_LEVELS=${STUDY_LEVELS:-3..6}
+study() {
+  local dir=$OUT/study
+  mkdir -p "$dir"
+  for method in cutcell staircase; do
+    for np in 1 2; do
+      local ranks="--np $np"
+      [ $np = 1 ] && ranks="--solver petsc"
+      "$VOLMESH" study convergence --problem sine --method $method --levels "$STUDY_LEVELS" $ranks \
+        -o "$dir/$method-$np" --json --quiet > "$dir/$method-$np.json"
+    done
+  done
+  /usr/bin/python3 - "$dir" <<'PY' | tee "$OUT/study.md"
+import json, sys
+d = sys.argv[1]
+print("| method | norm | serial slope | 2 ranks slope | difference |")
+print("|---|---|---|---|---|")
+for m in ("cutcell", "staircase"):
+    a, b = (json.load(open(f"{d}/{m}-{np}.json")) for np in (1, 2))
+    sa, sb = a["series"][0]["slope"], b["series"][0]["slope"]
+    for k in sa:
+        print(f"| {m} | {k} | {sa[k]:.3f} | {sb[k]:.3f} | {sb[k] - sa[k]:+.3f} |")
+PY
+}
+
+# Section 7: the cut-cell solve at LARGE_LEVEL on 2 ranks.
+LARGE_LEVEL=${LARGE_LEVEL:-8}
+large() {
+  local dir=$OUT/large
+  mkdir -p "$dir"
+  $MPIRUN -np 2 sh -c 'exec /usr/bin/time -v -o "$0.$OMPI_COMM_WORLD_RANK" "$@"' "$dir/rss" \
+    "$VOLMESH" solve poisson --problem sine --method cutcell --domain "$DOMAIN" --level "$LARGE_LEVEL" \
+    -o "$dir/u.pvtu" --json --quiet -ksp_rtol 1e-8 > "$dir/u.json"
+  /usr/bin/python3 - "$dir" <<'PY' | tee "$OUT/large.md"
+import json, sys
+d = sys.argv[1]
+j = json.load(open(f"{d}/u.json"))
+def peak(r):
+    for line in open(f"{d}/rss.{r}"):
+        if "Maximum resident set size" in line:
+            return int(line.split(":")[1]) / 1024.0
+print(f"cells {j['cells']}, unknowns {j['unknowns']}, iterations {j['iterations']}, "
+      f"L2 error {j['errors']['l2']:.4e}; peak MB per rank {peak(0):.0f}, {peak(1):.0f}")
+print("| stage | " + " | ".join(j["seconds_max"]) + " |")
+print("|---|" + "---|" * len(j["seconds_max"]))
+print("| seconds (slowest rank) | " + " | ".join(f"{v:.2f}" for v in j["seconds_max"].values()) + " |")
+PY
+}
+
+# Section 8: what the ranks send, for the cut-cell pieces at PIECES_LEVEL on 2 ranks: meshing
+# alone, then the whole solve (Open MPI's monitoring components: messages and bytes per peer,
+# point to point and inside the collectives).
+traffic() {
+  local dir=$OUT/traffic
+  mkdir -p "$dir"
+  local monitor="--mca pml_monitoring_enable 2 --mca pml_monitoring_enable_output 3"
+  $MPIRUN -np 2 $monitor --mca pml_monitoring_filename "$dir/mesh" "$VOLMESH" mesh cutcell "$DOMAIN" \
+    --level "$PIECES_LEVEL" --base-level "$PIECES_LEVEL" -o "$dir/mesh.pvtu" --quiet > /dev/null
+  $MPIRUN -np 2 $monitor --mca pml_monitoring_filename "$dir/solve" "$VOLMESH" solve poisson \
+    --problem sine --method cutcell --domain "$DOMAIN" --level "$PIECES_LEVEL" -o "$dir/u.pvtu" \
+    --quiet > /dev/null
+  /usr/bin/python3 - "$dir" <<'PY' | tee "$OUT/traffic.md"
+import sys
+d = sys.argv[1]
+print("| command | rank | point-to-point messages | point-to-point MB | collectives' messages | collectives' MB |")
+print("|---|---|---|---|---|---|")
+for what in ("mesh", "solve"):
+    for r in (0, 1):
+        p2p = [0, 0]
+        coll = [0, 0]
+        for line in open(f"{d}/{what}.{r}.prof"):
+            f = line.split("\t")
+            if f[0] in ("E", "C") and f[1] != f[2]:
+                into = p2p if f[0] == "E" else coll
+                into[0] += int(f[4].split()[0])
+                into[1] += int(f[3].split()[0])
+        print(f"| {what} | {r} | {p2p[0]} | {p2p[1] / 1e6:.2f} | {coll[0]} | {coll[1] / 1e6:.2f} |")
+PY
+}
+
+case " ${SECTIONS:-all} " in
+  *" all "*) ;;
+  *)
+    for section in ${SECTIONS}; do
+      case $section in
+        pieces) pieces staircase; pieces cutcell ;;
+        staircase | cutcell) pieces $section ;;
+        study) study ;;
+        large) large ;;
+        traffic) traffic ;;
+        *) echo "SECTIONS: unknown section $section (pieces, staircase, cutcell, study, large, traffic)" >&2
+           exit 2 ;;
+      esac
+    done
+    exit 0 ;;
+esac
 mpicc -O2 validation/distributed/poisson_anchor.c $(pkg-config --cflags --libs PETSc) -o "$OUT/anchor"
 
 CASE="solve poisson --problem sine --method cutcell --domain $DOMAIN"
@@ -194,4 +300,8 @@ for i, name in enumerate(names):
     print(f"| {name} | {e['linear_solver']} | {e['iterations']} | {e['seconds']['preconditioner']:.2f} | "
           f"{e['seconds']['solve']:.2f} |")
 PY
-pieces
+pieces staircase
+pieces cutcell
+study
+large
+traffic

@@ -9,8 +9,10 @@
 #include "volmesh/runs/distributed.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/fem/parallel.hpp"
+#include "volmesh/meshers/cutcell_request.hpp"
 #include "volmesh/meshers/grid.hpp"
 #include "volmesh/meshers/octree_request.hpp"
+#include "volmesh/octree_dist/cutcell_piece.hpp"
 #include "volmesh/octree_dist/grid_piece.hpp"
 #include "volmesh/octree_dist/staircase_piece.hpp"
 
@@ -19,7 +21,7 @@ namespace volmesh::cli {
 std::string why_not_on_every_rank(const meshers::MesherInfo& method,
                                   const meshers::MethodOptions& given) {
   if (!p4est_built()) return "this volmesh was built without p4est";
-  if (method.name == "staircase") return "";
+  if (method.name == "staircase" || method.name == "cutcell") return "";
   if (method.name == "grid")
     return meshers::given<bool>(given, "tets").value_or(false) ? "grid --tets has no pieces" : "";
   return method.name + " does not mesh in pieces";
@@ -76,8 +78,11 @@ RankMesh mesh_on_every_rank(const meshers::MesherInfo& method, const Domain& dom
       return;
     }
     const OctreeOptions options = meshers::octree_request(request);
-    out.piece = staircase_piece(build_distributed_octree(domain, options), domain);
     out.h = meshers::octree_cell_size(domain, options);
+    if (method.name == "cutcell")
+      out.piece = cutcell_piece(domain, meshers::cutcell_request(request));
+    else
+      out.piece = staircase_piece(build_distributed_octree(domain, options), domain);
   });
   require_cell_per_rank(out.piece.global_cell_count);
   return out;

@@ -14,6 +14,7 @@
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/geometry.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/cutcell/cutcell_tree.hpp"
 #include "volmesh/quality/face_metrics.hpp"
 
 namespace volmesh {
@@ -126,6 +127,21 @@ Grid refined_grid(Octree& tree, const Domain& domain, const CutcellOptions& opti
 }  // namespace cutcell
 
 PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, CutcellStats* stats) {
+  const Clock::time_point start = Clock::now();
+  check_options(options);
+  if (options.progress) options.progress("octree", 0.0);
+  Octree tree = build_octree(domain, options.octree);
+  const double octree_seconds = seconds_since(start);
+  CutcellStats st;
+  PolyMesh mesh = cutcell_mesh_of_tree(std::move(tree), domain, options, &st);
+  st.octree_seconds = octree_seconds;
+  st.total_seconds = seconds_since(start);
+  if (stats) *stats = st;
+  return mesh;
+}
+
+PolyMesh cutcell_mesh_of_tree(Octree tree, const Domain& domain, const CutcellOptions& options,
+                              CutcellStats* stats) {
   using namespace cutcell;
   const Clock::time_point start = Clock::now();
   check_options(options);
@@ -134,10 +150,6 @@ PolyMesh cutcell_mesh(const Domain& domain, const CutcellOptions& options, Cutce
   };
   CutcellStats st;
   st.level = options.octree.level;
-
-  progress("octree", 0.0);
-  Octree tree = build_octree(domain, options.octree);
-  st.octree_seconds = seconds_since(start);
 
   const Clock::time_point cutting = Clock::now();
   const Grid grid = refined_grid(tree, domain, options, st);

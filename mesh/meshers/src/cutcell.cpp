@@ -1,5 +1,5 @@
 // The cut-cell octree method (MMCMS, volmesh/cutcell/cutcell.hpp).
-#include "volmesh/cutcell/cutcell.hpp"
+#include "volmesh/meshers/cutcell_request.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -14,7 +14,9 @@ namespace {
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
-MeshResult mesh_cutcell(const Domain& domain, const MeshRequest& request) {
+}  // namespace
+
+CutcellOptions cutcell_request(const MeshRequest& request) {
   CutcellOptions options;
   options.octree = octree_request(request);
   if (const auto points = given<std::string>(request.options, "interface-points"))
@@ -25,6 +27,13 @@ MeshResult mesh_cutcell(const Domain& domain, const MeshRequest& request) {
   if (const auto levels = given<std::int64_t>(request.options, "crossing-levels"))
     options.crossing_levels = static_cast<int>(*levels);
   options.progress = request.progress;
+  return options;
+}
+
+namespace {
+
+MeshResult mesh_cutcell(const Domain& domain, const MeshRequest& request) {
+  const CutcellOptions options = cutcell_request(request);
   CutcellStats stats;
   MeshResult r;
   r.mesh = cutcell_mesh(domain, options, &stats);

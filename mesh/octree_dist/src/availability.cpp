@@ -1,5 +1,6 @@
 // Whether the build has p4est; without it, the refusals.
 #include "volmesh/core/errors.hpp"
+#include "volmesh/octree_dist/cutcell_piece.hpp"
 #include "volmesh/octree_dist/distributed_octree.hpp"
 #include "volmesh/octree_dist/grid_piece.hpp"
 #include "volmesh/octree_dist/staircase_piece.hpp"
@@ -24,11 +25,15 @@ bool p4est_built() { return false; }
 
 std::string distributed_octree_summary() { return "distributed octree: built without p4est"; }
 
-DistributedOctree build_distributed_octree(const Domain&, const OctreeOptions&) {
+DistributedOctree build_distributed_octree(const Domain&, const OctreeOptions&, int) {
   throw InputError("this volmesh was built without p4est: no distributed octree");
 }
 
 RankPiece staircase_piece(const DistributedOctree&, const Domain&) {
+  throw InputError("this volmesh was built without p4est: no distributed octree");
+}
+
+RankPiece cutcell_piece(const Domain&, const CutcellOptions&) {
   throw InputError("this volmesh was built without p4est: no distributed octree");
 }
 

@@ -55,8 +55,9 @@ void collect_leaves(p8est_t* forest, DistributedOctree& out) {
   });
 }
 
-void collect_ghosts(p8est_t* forest, DistributedOctree& out) {
+void collect_ghosts(p8est_t* forest, int layers, DistributedOctree& out) {
   p8est_ghost_t* ghost = p8est_ghost_new(forest, P8EST_CONNECT_FULL);
+  for (int layer = 1; layer < layers; ++layer) p8est_ghost_expand(forest, ghost);
   const std::size_t n = ghost->ghosts.elem_count;
   out.ghosts.reserve(n);
   out.ghost_owner.reserve(n);
@@ -71,9 +72,10 @@ void collect_ghosts(p8est_t* forest, DistributedOctree& out) {
 
 }  // namespace
 
-DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOptions& options) {
+DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOptions& options, int ghost_layers) {
   const Clock::time_point start = Clock::now();
   check_options(options);
+  if (ghost_layers < 1) throw InputError("the distributed octree needs at least one ghost layer");
   DistributedOctree out;
   out.root = octree_root(domain, options);
   const Octree frame(out.root.origin, out.root.side);
@@ -103,7 +105,7 @@ DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOpt
   out.ranks = p->mpisize;
   out.global_leaves = p->global_num_quadrants;
   collect_leaves(p, out);
-  collect_ghosts(p, out);
+  collect_ghosts(p, ghost_layers, out);
   st.seconds = seconds_since(start);
   return out;
 }

@@ -1,6 +1,10 @@
 #include "point_numbering.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <string>
+
+#include "volmesh/core/errors.hpp"
 
 namespace volmesh::octree_dist {
 namespace {
@@ -24,29 +28,33 @@ std::vector<T> exchange(const std::vector<T>& values, const std::vector<int>& se
   return received;
 }
 
-}  // namespace
+constexpr std::int64_t kNotHeld = -1;
 
-PointNumbers number_points(const std::vector<std::uint64_t>& keys, const std::vector<int>& owner, MPI_Comm comm) {
+template <class Key>
+PointNumbers number_keys(const std::vector<Key>& keys, const std::vector<int>& owner, MPI_Datatype key_type,
+                         MPI_Comm comm) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
-  std::vector<std::uint64_t> owned;
+  std::vector<Key> owned;
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (owner[i] == rank) owned.push_back(keys[i]);
+  std::sort(owned.begin(), owned.end());
   const std::int64_t mine = static_cast<std::int64_t>(owned.size());
   std::int64_t first = 0;
   MPI_Exscan(&mine, &first, 1, MPI_INT64_T, MPI_SUM, comm);
   if (rank == 0) first = 0;  // MPI_Exscan leaves rank 0's result undefined
   PointNumbers out;
   MPI_Allreduce(&mine, &out.count, 1, MPI_INT64_T, MPI_SUM, comm);
-  const auto own_number = [&](std::uint64_t key) {
-    return first + (std::lower_bound(owned.begin(), owned.end(), key) - owned.begin());
+  const auto own_number = [&](const Key& key) {
+    const auto at = std::lower_bound(owned.begin(), owned.end(), key);
+    return at == owned.end() || *at != key ? kNotHeld : first + (at - owned.begin());
   };
 
-  // Requests grouped by owner: keys are sorted, owners need not be.
+  // Requests grouped by owner.
   std::vector<std::size_t> asked;  // point per request, grouped by owner
   std::vector<int> ask_count(ranks, 0);
-  out.id.assign(keys.size(), -1);
+  out.id.assign(keys.size(), kNotHeld);
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (owner[i] == rank)
       out.id[i] = own_number(keys[i]);
@@ -55,7 +63,7 @@ PointNumbers number_points(const std::vector<std::uint64_t>& keys, const std::ve
   std::vector<int> ask_offset(ranks + 1, 0);
   for (int r = 0; r < ranks; ++r) ask_offset[r + 1] = ask_offset[r] + ask_count[r];
   asked.resize(ask_offset[ranks]);
-  std::vector<std::uint64_t> ask_keys(ask_offset[ranks]);
+  std::vector<Key> ask_keys(ask_offset[ranks]);
   std::vector<int> next(ask_offset.begin(), ask_offset.end() - 1);
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (owner[i] != rank) {
@@ -63,13 +71,40 @@ PointNumbers number_points(const std::vector<std::uint64_t>& keys, const std::ve
       ask_keys[next[owner[i]]++] = keys[i];
     }
   std::vector<int> question_count;
-  const std::vector<std::uint64_t> questions = exchange(ask_keys, ask_count, question_count, MPI_UINT64_T, comm);
+  const std::vector<Key> questions = exchange(ask_keys, ask_count, question_count, key_type, comm);
   std::vector<std::int64_t> answers(questions.size());
   for (std::size_t q = 0; q < questions.size(); ++q) answers[q] = own_number(questions[q]);
   std::vector<int> answer_count;
   const std::vector<std::int64_t> numbers = exchange(answers, question_count, answer_count, MPI_INT64_T, comm);
   for (std::size_t a = 0; a < numbers.size(); ++a) out.id[asked[a]] = numbers[a];
   return out;
+}
+
+PointNumbers all_held(PointNumbers numbers, MPI_Comm comm) {
+  if (std::count(numbers.id.begin(), numbers.id.end(), kNotHeld) == 0) return numbers;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  throw InputError("pieces: rank " + std::to_string(rank) +
+                   " holds a point shared with another rank that its owner does not have there");
+}
+
+}  // namespace
+
+PlaceKey place_key(const Vec3& x) {
+  return {std::bit_cast<std::uint64_t>(x.x()), std::bit_cast<std::uint64_t>(x.y()), std::bit_cast<std::uint64_t>(x.z())};
+}
+
+PointNumbers number_points(const std::vector<GridKey>& keys, const std::vector<int>& owner, MPI_Comm comm) {
+  return all_held(number_keys(keys, owner, MPI_UINT64_T, comm), comm);
+}
+
+PointNumbers number_points(const std::vector<PlaceKey>& keys, const std::vector<int>& owner, MPI_Comm comm) {
+  MPI_Datatype three;
+  MPI_Type_contiguous(3, MPI_UINT64_T, &three);
+  MPI_Type_commit(&three);
+  PointNumbers out = number_keys(keys, owner, three, comm);
+  MPI_Type_free(&three);
+  return all_held(std::move(out), comm);
 }
 
 }  // namespace volmesh::octree_dist

@@ -12,10 +12,15 @@ Index InterfaceQuery::region(const GridPoint& p) {
   return r;
 }
 
-bool InterfaceQuery::on_interface(const OctreeLeaf& leaf) {
+bool InterfaceQuery::corners_differ(const OctreeLeaf& leaf) {
   const Index first = region(leaf.corner(0));
   for (int k = 1; k < 8; ++k)
     if (region(leaf.corner(k)) != first) return true;
+  return false;
+}
+
+bool InterfaceQuery::on_interface(const OctreeLeaf& leaf) {
+  if (corners_differ(leaf)) return true;
   for (const auto& [a, b] : kEdgeCorners)
     if (!domain_.crossings(frame_.world(leaf.corner(a)), frame_.world(leaf.corner(b))).empty()) return true;
   return false;
@@ -24,7 +29,7 @@ bool InterfaceQuery::on_interface(const OctreeLeaf& leaf) {
 void classify_leaves(p8est_t* forest, InterfaceQuery& query) {
   for_each_leaf(forest, [&query](p8est_quadrant_t& q) {
     LeafData& d = leaf_data(q);
-    if (d.state == LeafState::unknown) d.state = query.on_interface(to_leaf(q)) ? LeafState::cut : LeafState::uncut;
+    if (d.state == LeafState::unknown) d.state = query.corners_differ(to_leaf(q)) ? LeafState::cut : LeafState::uncut;
   });
 }
 

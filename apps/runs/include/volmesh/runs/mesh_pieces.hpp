@@ -1,7 +1,7 @@
 #pragma once
-// Meshing on every rank under mpirun (docs/distributed.md): the staircase method from the
-// distributed octree (each rank its leaves and the ghost layer) and the grid's hexahedra
-// (each rank its stretch of the Morton curve). No rank holds more than its own piece.
+// Meshing on every rank under mpirun (docs/distributed.md): the staircase and cut-cell
+// methods from the distributed octree (each rank its leaves and ghost layers) and the grid's
+// hexahedra (each rank its stretch of the Morton curve). No rank holds the whole mesh.
 #include <filesystem>
 #include <string>
 #include <string_view>

@@ -40,11 +40,12 @@ struct DistributedOctree {
   // This rank's leaves, in Morton order; every rank's stretch follows the previous rank's.
   std::vector<OctreeLeaf> leaves;
   // Per leaf: it lies on the domain's boundaries or interfaces (its corners in different
-  // regions or an edge crossed, build_octree's criterion). The partition weighs such leaves
-  // heavier: the meshers do most of their work in them.
+  // regions; or, for a leaf the refinement asked, an edge crossed: build_octree's criterion).
+  // The partition weighs such leaves heavier: the meshers do most of their work in them.
   std::vector<std::uint8_t> cut;
   // The other ranks' leaves that share a face, an edge or a corner with one of this rank's,
-  // in Morton order, and the rank owning each.
+  // and with ghost_layers > 1 those touching them in turn, layer by layer: in Morton order,
+  // and the rank owning each.
   std::vector<OctreeLeaf> ghosts;
   std::vector<int> ghost_owner;
   DistributedOctreeStats stats;
@@ -53,6 +54,7 @@ struct DistributedOctree {
 // Collective over MPI_COMM_WORLD, which must have started. Throws InputError, alike on every
 // rank, where build_octree does, for a level beyond kDistributedOctreeMaxLevel, when MPI has
 // not started, and in a build without p4est.
-DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOptions& options);
+DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOptions& options,
+                                           int ghost_layers = 1);
 
 }  // namespace volmesh
