@@ -85,7 +85,7 @@ TEST(HexdcThin, TheGrowthBoundHolds) {
   for (const double growth : {1.4, 1.7}) {
     HexMesh mesh = contoured(field);
     const Index before = hexes_and_quads(mesh);
-    const ThinRefineStats stats = refine_thin_parts(mesh, field, growth);
+    const ThinRefineStats stats = refine_thin_parts(mesh, field, {}, growth);
     EXPECT_GT(stats.thin_refined, 0) << growth;
     EXPECT_LT(stats.thin_refined, stats.thin_hexes) << growth;
     EXPECT_LE(hexes_and_quads(mesh), static_cast<Index>(growth * static_cast<double>(before)))

@@ -1,6 +1,7 @@
 #include "volmesh/hexdc/mesher.hpp"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -9,6 +10,7 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/core/errors.hpp"
 #include "volmesh/core/stopwatch.hpp"
+#include "volmesh/hexdc/hex_quality.hpp"
 
 namespace volmesh {
 namespace {
@@ -36,9 +38,10 @@ RefineStats refine_marked(HexMesh& mesh, const HexdcRefinement& refinement) {
   return refine_hexes(mesh, std::move(marks));
 }
 
-// Every stage once, with or without the thin parts refined; the ten corner tets not enforced.
+// Every stage once, with or without the thin parts refined (those near `first` first); the ten
+// corner tets not enforced.
 HexdcResult mesh_stages(const VoxelGrid& field, const SurfaceProjector& surface,
-                        const HexdcOptions& options, bool thin) {
+                        const HexdcOptions& options, bool thin, const std::vector<Vec3>& first) {
   HexdcResult r;
 
   report(options.progress, "dual contouring", kContourStart);
@@ -51,7 +54,7 @@ HexdcResult mesh_stages(const VoxelGrid& field, const SurfaceProjector& surface,
   const Clock::time_point refining = Clock::now();
   r.refinement = refine_marked(r.mesh, options.refinement);
   // Thin and curved parts, so that no part of the solid is one node across.
-  if (thin) r.thin = refine_thin_parts(r.mesh, field);
+  if (thin) r.thin = refine_thin_parts(r.mesh, field, first);
   r.refine_seconds = seconds_since(refining);
   if (r.mesh.num_cells() != r.uniform.cells) r.refined = hex_mesh_stats(r.mesh);
 
@@ -93,16 +96,34 @@ double worst(const HexdcResult& r) {
   return r.improved.degenerate > 0 ? kRefusedWorst : r.improved.min_scaled_jacobian;
 }
 
+// The centres of the hexes failing the ten corner tets.
+std::vector<Vec3> failing_hex_centres(const HexMesh& mesh) {
+  std::vector<Vec3> centres;
+  for (const auto& cell : mesh.cells) {
+    std::array<Vec3, 8> corners;
+    Vec3 centre = Vec3::Zero();
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+      corners[c] = mesh.points[static_cast<std::size_t>(cell[c])];
+      centre += corners[c] / static_cast<double>(corners.size());
+    }
+    if (!hex_corner_tets_positive(corners)) centres.push_back(centre);
+  }
+  return centres;
+}
+
 // ThinParts::automatic: the mesh as it comes and, where a hex fails the ten corner tets or the
 // worst scaled Jacobian is below kThinRetryBelow, once more with the thin parts refined; the
 // better is kept.
 HexdcResult mesh_choosing(const VoxelGrid& field, const SurfaceProjector& surface,
                           const HexdcOptions& options) {
-  HexdcResult plain = mesh_stages(field, surface, options, false);
+  HexdcResult plain = mesh_stages(field, surface, options, false, {});
   if (worst(plain) >= kThinRetryBelow) return plain;
   HexdcOptions again = options;
   again.progress = part_of(options.progress, 0.0, 1.0, "thin parts refined: ");
-  HexdcResult refined = mesh_stages(field, surface, again, true);
+  // A refused mesh has nothing to lose: the refinement starts where its hexes failed.
+  const std::vector<Vec3> failing =
+      worst(plain) == kRefusedWorst ? failing_hex_centres(plain.mesh) : std::vector<Vec3>{};
+  HexdcResult refined = mesh_stages(field, surface, again, true, failing);
   const ThinChoice choice{.tried = true,
                           .kept = worst(refined) > worst(plain),
                           .min_scaled_jacobian_without = worst(plain),
@@ -127,7 +148,7 @@ HexdcResult hexdc_mesh(const VoxelGrid& field, const SurfaceProjector& surface,
                      ": no sample of the signed distance is >= 0: nothing is inside");
   HexdcResult r = options.thin_parts == ThinParts::automatic
                       ? mesh_choosing(field, surface, options)
-                      : mesh_stages(field, surface, options, options.thin_parts == ThinParts::on);
+                      : mesh_stages(field, surface, options, options.thin_parts == ThinParts::on, {});
   // The ten corner tets are stricter than check_validity: a mesh failing them is refused.
   if (r.improved.degenerate > 0) {
     const Vec3& c = r.improved.first_degenerate_centre;

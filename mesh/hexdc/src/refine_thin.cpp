@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <tbb/parallel_for.h>
 
 #include "refine_templates.hpp"
@@ -212,29 +213,44 @@ class MarkBudget {
 
 enum class Kind : std::uint8_t { across, thin, curved };
 
+// Whether a point of `points` lies in hex h's bounding box grown by its mean edge.
+bool near_any(const HexMesh& mesh, std::size_t h, const std::vector<Vec3>& points) {
+  if (points.empty()) return false;
+  Eigen::AlignedBox3d box;
+  for (const Index v : mesh.cells[h]) box.extend(mesh.points[static_cast<std::size_t>(v)]);
+  double shortest = 0.0;
+  const double edge = mean_edge(mesh, mesh.cells[h], &shortest);
+  box.min().array() -= edge;
+  box.max().array() += edge;
+  return std::any_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });
+}
+
 }  // namespace
 
-ThinRefineStats refine_thin_parts(HexMesh& mesh, const VoxelGrid& field, double max_growth) {
+ThinRefineStats refine_thin_parts(HexMesh& mesh, const VoxelGrid& field,
+                                  const std::vector<Vec3>& first, double max_growth) {
   ThinRefineStats stats;
   stats.hexes_before = mesh.num_cells();
   stats.boundary_quads_before = static_cast<Index>(mesh.boundary_faces.size());
   const HexMeasures m = measure(mesh, field);
 
-  // Seeds by kind (one hex across, thin, curved), then by measure; ties in hex order.
-  std::vector<std::tuple<Kind, double, std::size_t>> seeds;
+  // Seeds near `first` before the others, then by kind (one hex across, thin, curved), then by
+  // measure; ties in hex order.
+  std::vector<std::tuple<bool, Kind, double, std::size_t>> seeds;
   for (std::size_t h = 0; h < m.width.size(); ++h) {
+    const bool later = !near_any(mesh, h, first);
     if (m.across[h] != 0)
-      seeds.emplace_back(Kind::across, m.width[h], h);
+      seeds.emplace_back(later, Kind::across, m.width[h], h);
     else if (m.width[h] != hexdc_detail::kNoWidth)
-      seeds.emplace_back(Kind::thin, m.width[h], h);
+      seeds.emplace_back(later, Kind::thin, m.width[h], h);
     else if (m.spread[h] > kCurvedAngleDeg)
-      seeds.emplace_back(Kind::curved, -m.spread[h], h);
+      seeds.emplace_back(later, Kind::curved, -m.spread[h], h);
   }
   std::sort(seeds.begin(), seeds.end());
   const auto limit = static_cast<Index>(
       max_growth * static_cast<double>(stats.hexes_before + stats.boundary_quads_before));
   MarkBudget budget(mesh, m.collapsed, limit);
-  for (const auto& [kind, order, h] : seeds) {
+  for (const auto& [later, kind, order, h] : seeds) {
     const bool thin = kind != Kind::curved;
     (thin ? stats.thin_hexes : stats.curved_hexes) += 1;
     const auto outcome =

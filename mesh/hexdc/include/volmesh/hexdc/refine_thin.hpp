@@ -19,6 +19,8 @@
 // one hex per boundary quad, so this bounds the final mesh), or when it would split a hex with
 // a nearly collapsed edge (its children would have coinciding nodes). The marks kept are
 // refined by refine_hexes.
+#include <vector>
+
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/voxel_grid.hpp"
 #include "volmesh/hexdc/refine.hpp"
@@ -42,7 +44,10 @@ struct ThinRefineStats {
   RefineStats refinement;  // of the marks kept
 };
 
+// Seeds with a point of `first` in their bounding box grown by a mean edge are taken before
+// the others (the mesher passes the failing hexes of a refused mesh).
 ThinRefineStats refine_thin_parts(HexMesh& mesh, const VoxelGrid& field,
+                                  const std::vector<Vec3>& first = {},
                                   double max_growth = kThinGrowth);
 
 }  // namespace volmesh
