@@ -93,6 +93,29 @@ TEST(HexdcThin, TheGrowthBoundHolds) {
   }
 }
 
+// Hexes with their centre within `radius` of p.
+Index hexes_near(const HexMesh& mesh, const Vec3& p, double radius) {
+  Index n = 0;
+  for (std::size_t h = 0; h < mesh.cells.size(); ++h) {
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& c : test_hexdc::corners_of(mesh, h)) centre += c / 8.0;
+    n += (centre - p).norm() < radius ? 1 : 0;
+  }
+  return n;
+}
+
+// Under a tight bound the seeds near the points given come first: the fin's far corner, which
+// the narrowest-first order leaves out, is refined when asked for.
+TEST(HexdcThin, SeedsNearThePointsGivenComeFirst) {
+  constexpr double kGrowth = 1.4, kRadius = 0.15;
+  const Vec3 far_corner = kFinCentre + Vec3(kFinHalf.x(), kFinHalf.y(), 0.0);
+  const VoxelGrid field = test_fields::sample_paper_cube(finned_ball);
+  HexMesh plain = contoured(field), asked = contoured(field);
+  refine_thin_parts(plain, field, {}, kGrowth);
+  refine_thin_parts(asked, field, {far_corner}, kGrowth);
+  EXPECT_GT(hexes_near(asked, far_corner, kRadius), hexes_near(plain, far_corner, kRadius));
+}
+
 // The whole mesher with the refinement forced on: every hex passes the ten corner tets (exact),
 // and the mesh has at most twice the hexes it has without.
 TEST(HexdcThin, FinMeshesValidWithAtMostTwiceTheHexes) {
