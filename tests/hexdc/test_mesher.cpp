@@ -38,7 +38,10 @@ TEST(HexdcMesh, BallIsValidWithItsBoundaryOnTheSphere) {
   EXPECT_EQ(test_hexdc::invalid_hexes(r.mesh), 0);
   EXPECT_EQ(r.improved.cells, r.mesh.num_cells());
   EXPECT_EQ(r.improved.degenerate, 0);
-  // The buffer layer: one hex per boundary quad on top of the uniform mesh.
+  // Nothing thin, no hex's surface turning by kCurvedAngleDeg: the buffer layer puts one hex
+  // per boundary quad on top of the uniform mesh.
+  EXPECT_EQ(r.thin.thin_hexes, 0);
+  EXPECT_EQ(r.thin.curved_hexes, 0);
   EXPECT_EQ(r.mesh.num_cells(), r.uniform.cells + r.pillow.pillow_hexes);
   EXPECT_EQ(r.pillow.pillow_hexes, static_cast<Index>(r.mesh.boundary_faces.size()));
   EXPECT_FALSE(r.refined.has_value());

@@ -31,6 +31,10 @@ constexpr int kDefaultVoxelsLog2 = 2;
 constexpr int kBoxNumbers = 6;
 // The share of the run the signed distances take, before the mesher's stages.
 constexpr double kFieldShare = 0.2;
+// The thin parts' widths are read from runs of samples across a part under two cells wide:
+// with one voxel per node a part one node wide and one two nodes wide look alike, so a field
+// the mesher samples itself gets at least 2^1 voxels per node when the refinement is on.
+constexpr int kThinVoxelsLog2 = 1;
 
 // k of a signed-distance grid domain whose own samples are a cubic 2^k + 1 grid, 0 for other
 // domains. Throws InputError for a grid of another size when no --dim asks to resample it: the
@@ -78,6 +82,12 @@ HexdcRefinement refinement_of(const MethodOptions& options) {
   return r;
 }
 
+ThinParts thin_parts_of(const MethodOptions& options) {
+  const std::string mode = given<std::string>(options, "thin-parts").value_or("auto");
+  if (mode == "on") return ThinParts::on;
+  return mode == "off" ? ThinParts::off : ThinParts::automatic;
+}
+
 MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const int level = *request.level;
   if (level < kMinLevel)
@@ -92,9 +102,14 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
                      request.domain_name + " allows: " + std::to_string((Index{1} << depth) + 1) +
                      " samples per axis (k = " + std::to_string(depth) +
                      ") give at most --level " + std::to_string(depth));
+  const ThinParts thin_parts = thin_parts_of(request.options);
+  const int field_depth = thin_parts != ThinParts::off && own == 0
+                              ? std::min(std::max(depth, level + kThinVoxelsLog2), kHexdcMaxDepth)
+                              : depth;
   HexdcOptions options;
   options.level = level;
   options.refinement = refinement_of(request.options);
+  options.thin_parts = thin_parts;
   options.source = request.domain_name;
   options.progress = part_of(request.progress, kFieldShare, 1.0);
   if (const auto angle = given<double>(request.options, "feature-angle"))
@@ -104,7 +119,7 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   report(request.progress, "signed distances", 0.0);
   const Clock::time_point sampling = Clock::now();
   const std::shared_ptr<const SignedDistance> outer = outer_surface_distance(domain);
-  const VoxelGrid field = hexdc_field(domain, depth, hexdc_margin(level), outer.get());
+  const VoxelGrid field = hexdc_field(domain, field_depth, hexdc_margin(level), outer.get());
   const double field_seconds = seconds_since(sampling);
   // The creases and corners of a surface domain's outer surface; an analytic or sampled domain
   // has no triangles to find them on.
@@ -115,8 +130,10 @@ MeshResult mesh_hexdc(const Domain& domain, const MeshRequest& request) {
   const HexdcResult hexes = hexdc_mesh(field, hexdc_surface(domain, outer), options);
   MeshResult r;
   r.mesh = to_poly_mesh(hexes.mesh);
-  r.h = field.spacing.x() * static_cast<double>(Index{1} << (depth - level));
+  r.h = field.spacing.x() * static_cast<double>(Index{1} << (field_depth - level));
   r.summary = hexdc_summary(hexes);
+  r.summary["thin_refinement"]["dim_asked"] = depth;
+  r.summary["thin_refinement"]["dim"] = field_depth;
   r.summary["samples_per_axis"] = field.dims[0];
   r.summary["voxel_size"] = field.spacing.x();
   r.summary["field_seconds"] = field_seconds;
@@ -134,6 +151,13 @@ const Registration registered{MesherInfo{
                  .type = OptionSpec::Type::integer,
                  .min = 2,
                  .max = kHexdcMaxDepth},
+                {.name = "thin-parts",
+                 .help = "refine where the solid is under two cells wide or its surface turns "
+                         "by more than 45 degrees across a hex, the mesh at most doubled: on, "
+                         "off, or auto (default): only when the mesh without it is refused or "
+                         "its worst scaled Jacobian is below 0.3, keeping the better",
+                 .type = OptionSpec::Type::choice,
+                 .choices = {"auto", "on", "off"}},
                 {.name = "refine-boundary",
                  .help = "split the N layers of hexes nearest the surface into 27 each, with "
                          "Schneiders' transition templates around them (default 0: none)",

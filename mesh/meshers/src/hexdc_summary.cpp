@@ -39,6 +39,29 @@ nlohmann::json refinement_summary(const RefineStats& stats) {
             {"full", by_case(RefineCase::full)}}}};
 }
 
+// The automatic refinement of thin and curved parts; growth is the final mesh's hexes over what
+// they would be without it (the buffer layer adds one hex per boundary quad).
+nlohmann::json thin_summary(const ThinRefineStats& t, const ThinChoice& c) {
+  const Index before = t.hexes_before + t.boundary_quads_before;
+  return {{"tried", c.tried},
+          {"kept", c.kept},
+          {"min_scaled_jacobian_without", c.min_scaled_jacobian_without},
+          {"min_scaled_jacobian_with", c.min_scaled_jacobian_with},
+          {"thin_hexes", t.thin_hexes},
+          {"thin_hexes_refined", t.thin_refined},
+          {"curved_hexes", t.curved_hexes},
+          {"curved_hexes_refined", t.curved_refined},
+          {"skipped_collapsed", t.skipped_collapsed},
+          {"hexes_before", t.hexes_before},
+          {"hexes_after", t.hexes_after},
+          {"boundary_quads_before", t.boundary_quads_before},
+          {"boundary_quads_after", t.boundary_quads_after},
+          {"growth", before > 0 ? static_cast<double>(t.hexes_after + t.boundary_quads_after) /
+                                      static_cast<double>(before)
+                                : 1.0},
+          {"marked_nodes_after_closure", t.refinement.marked_after_closure}};
+}
+
 // The global optimiser's figures.
 nlohmann::json optimisation_summary(const OptimiseStats& o) {
   return {{"boundary_nodes", o.boundary_nodes},
@@ -96,6 +119,7 @@ nlohmann::json hexdc_summary(const HexdcResult& r) {
         {"two_boundary_faces_after", pillow.multi_boundary_hexes_after},
         {"degenerate_after", pillow.invalid_hexes_after}}},
       {"refinement", refinement_summary(r.refinement)},
+      {"thin_refinement", thin_summary(r.thin, r.thin_choice)},
       {"optimisation", optimisation_summary(r.optimisation)},
       {"projection",
        {{"nodes_projected", projection.projected},

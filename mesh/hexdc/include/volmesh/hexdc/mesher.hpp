@@ -3,12 +3,15 @@
 // inside) and the closest-point map of the surface it stands for in, a valid hex mesh out.
 // The stages, in order:
 //   contour (dual_contouring.hpp) at octree level `level`;
-//   refine (refine.hpp) the marked nodes: the boundary layers and the box asked for;
+//   refine (refine.hpp) the marked nodes: the boundary layers and the box asked for, then
+//   (refine_thin.hpp) where the field shows the solid thin or its surface curved, the final
+//   mesh at most doubled;
 //   pillow (pillow.hpp): the buffer layer, so that no hex keeps two boundary faces;
 //   project (project.hpp) the boundary nodes onto the surface, as far as no valid hex folds;
 //   optimise (optimise.hpp) every free node at once: untangle, then raise the worst scaled
 //   Jacobian, the boundary nodes sliding on the surface.
 // Every hex of the result passes the ten corner tets; a mesh with one failing is refused.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -25,6 +28,7 @@
 #include "volmesh/hexdc/pillow.hpp"
 #include "volmesh/hexdc/project.hpp"
 #include "volmesh/hexdc/refine.hpp"
+#include "volmesh/hexdc/refine_thin.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
 
 namespace volmesh {
@@ -38,9 +42,23 @@ struct HexdcRefinement {
   std::optional<Eigen::AlignedBox3d> box;  // mark_box
 };
 
+// The refinement of thin and curved parts (refine_thin.hpp): never, always, or automatic: the
+// mesh is made without it and, when that mesh is refused or its worst scaled Jacobian is below
+// 0.3, again with it, the better of the two kept (the refined one only if it is valid and its
+// worst scaled Jacobian higher).
+enum class ThinParts : std::uint8_t { off, on, automatic };
+
+struct ThinChoice {
+  bool tried = false;  // the automatic choice made the refined mesh too
+  bool kept = false;   // and kept it
+  // The worst scaled Jacobian of each, -1 for a mesh with a hex failing the ten corner tets.
+  double min_scaled_jacobian_without = 0.0, min_scaled_jacobian_with = 0.0;
+};
+
 struct HexdcOptions {
   int level = 0;  // the octree level contoured, in [1, k] for a (2^k + 1)^3 field
   HexdcRefinement refinement;
+  ThinParts thin_parts = ThinParts::automatic;  // refine_thin_parts after the asked refinement
   std::string source;  // names the field in messages (a file name, "builtin:ball")
   // The surface's sharp features (sharp_features at feature_angle_deg); empty when the domain
   // has no triangles. Their chains on the boundary are always found and their capture measured;
@@ -58,6 +76,8 @@ struct HexdcResult {
   HexMesh mesh;
   HexdcStats contouring;
   RefineStats refinement;
+  ThinRefineStats thin;  // of the refined mesh, kept or not; all zero when not made
+  ThinChoice thin_choice;
   PillowStats pillow;
   ProjectStats projection;
   OptimiseStats optimisation;
