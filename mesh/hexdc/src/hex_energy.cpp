@@ -1,5 +1,6 @@
 #include "hex_energy.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -20,6 +21,8 @@ constexpr std::array<bool, 10> kInner{false, false, false, false, true,
 // 6 V = 2: its normalised volume times √2 is 1 there, as a corner's scaled Jacobian.
 constexpr double kInnerScale = std::numbers::sqrt2;
 constexpr double kTwoThirds = 2.0 / 3.0;
+// A hex's soft-minimum terms: the ten tets, then its centre.
+constexpr std::size_t kHexTerms = 11, kCentreTerm = 10;
 
 Vec3 unit_corner(int c) {
   const auto& u = kUnitCube[static_cast<std::size_t>(c)];
@@ -146,21 +149,26 @@ double hex_centre_quality(const std::array<Vec3, 8>& p) {
   return scaled_det(principal_axes(p), 1.0, nullptr);
 }
 
-double hex_softmin_terms(const std::array<Vec3, 8>& p, double beta, double shift,
-                         HexGradient& gradient) {
-  double sum = 0.0;
-  Eigen::Matrix3d d_edges;
-  for (std::size_t t = 0; t < kHexCornerTets.size(); ++t) {
-    const double q =
-        scaled_det(edges(p, kHexCornerTets[t]), kInner[t] ? kInnerScale : 1.0, &d_edges);
-    const double w = std::exp(-beta * (q - shift));
-    sum += w;
-    scatter(-beta * w * d_edges, kHexCornerTets[t], gradient);
+SoftminTerms hex_softmin_terms(const std::array<Vec3, 8>& p, double beta, HexGradient& gradient) {
+  std::array<double, kHexTerms> q{};
+  std::array<Eigen::Matrix3d, kHexTerms> d_edges;
+  for (std::size_t t = 0; t < kHexCornerTets.size(); ++t)
+    q[t] = scaled_det(edges(p, kHexCornerTets[t]), kInner[t] ? kInnerScale : 1.0, &d_edges[t]);
+  q[kCentreTerm] = scaled_det(principal_axes(p), 1.0, &d_edges[kCentreTerm]);
+  SoftminTerms terms;
+  terms.least_tet = *std::min_element(q.begin(), q.begin() + kCentreTerm);
+  terms.other = q[kCentreTerm];
+  terms.least = std::min(terms.least_tet, terms.other);
+  for (std::size_t t = 0; t < kHexTerms; ++t) {
+    const double w = std::exp(-beta * (q[t] - terms.least));
+    terms.sum += w;
+    const Eigen::Matrix3d d = -beta * w * d_edges[t];
+    if (t == kCentreTerm)
+      scatter_axes(d, gradient);
+    else
+      scatter(d, kHexCornerTets[t], gradient);
   }
-  const double centre = scaled_det(principal_axes(p), 1.0, &d_edges);
-  const double w = std::exp(-beta * (centre - shift));
-  scatter_axes(-beta * w * d_edges, gradient);
-  return sum + w;
+  return terms;
 }
 
 namespace {
@@ -195,20 +203,27 @@ std::array<double, 4> quad_sines(const std::array<Vec3, 4>& q) {
   return sines;
 }
 
-double quad_softmin_terms(const std::array<Vec3, 4>& q, double beta, double shift,
-                          std::array<Vec3, 4>& gradient) {
+SoftminTerms quad_softmin_terms(const std::array<Vec3, 4>& q, double beta,
+                                std::array<Vec3, 4>& gradient) {
   const Vec3 normal = quad_normal(q);
-  double sum = 0.0;
+  std::array<QuadCorner, 4> corners;
+  for (std::size_t k = 0; k < 4; ++k)
+    corners[k] = quad_corner(q[(k + 1) % 4] - q[k], q[(k + 3) % 4] - q[k], normal);
+  SoftminTerms terms;
+  terms.least = std::min_element(corners.begin(), corners.end(), [](const auto& a, const auto& b) {
+                  return a.sine < b.sine;
+                })->sine;
+  terms.least_tet = terms.other = terms.least;
   for (std::size_t k = 0; k < 4; ++k) {
     const std::size_t next = (k + 1) % 4, previous = (k + 3) % 4;
-    const QuadCorner c = quad_corner(q[next] - q[k], q[previous] - q[k], normal);
-    const double w = std::exp(-beta * (c.sine - shift));
-    sum += w;
+    const QuadCorner& c = corners[k];
+    const double w = std::exp(-beta * (c.sine - terms.least));
+    terms.sum += w;
     gradient[next] += -beta * w * c.d_next;
     gradient[previous] += -beta * w * c.d_previous;
     gradient[k] -= -beta * w * (c.d_next + c.d_previous);
   }
-  return sum;
+  return terms;
 }
 
 }  // namespace volmesh::hexdc_detail

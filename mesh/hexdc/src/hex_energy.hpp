@@ -34,18 +34,27 @@ std::array<double, 10> hex_tet_qualities(const std::array<Vec3, 8>& corners);
 // trilinear map's derivatives there), Verdict's ninth term, which no corner tet bounds.
 double hex_centre_quality(const std::array<Vec3, 8>& corners);
 
-// Σ exp(−β (q − shift)) over the ten measures and the centre's; adds its gradient to
-// `gradient`. With them the soft minimum covers every term of hex_scaled_jacobian.
-double hex_softmin_terms(const std::array<Vec3, 8>& corners, double beta, double shift,
-                         HexGradient& gradient);
+// A hex's or quad's soft-minimum terms taken about their own least, so that no exponential
+// overflows: the whole sum weighs each part by exp(−β (least − the least of all)).
+struct SoftminTerms {
+  double least = 0.0;  // the least term
+  double sum = 0.0;    // Σ exp(−β (q − least)) over the terms, at least 1
+  double least_tet = 0.0;  // a hex's least tet measure (a quad's least sine)
+  double other = 0.0;      // a hex's centre measure (a quad's least sine)
+};
+
+// The ten tet measures and the centre's, which together cover every term of
+// hex_scaled_jacobian; adds the gradient of `sum` to `gradient`.
+SoftminTerms hex_softmin_terms(const std::array<Vec3, 8>& corners, double beta,
+                               HexGradient& gradient);
 
 // The sines of a quad's four interior angles about its unit vector-area normal: 1 at a right
 // angle, 0 at 0° or 180°, negative at a reflex corner.
 std::array<double, 4> quad_sines(const std::array<Vec3, 4>& quad);
 
-// Σ exp(−β (sine − shift)) over the four corners; adds its gradient to `gradient`, the normal
-// held fixed (exact for a planar quad, whose normal the corners' in-plane moves do not turn).
-double quad_softmin_terms(const std::array<Vec3, 4>& quad, double beta, double shift,
-                          std::array<Vec3, 4>& gradient);
+// The four corner sines; adds the gradient of `sum` to `gradient`, the normal held fixed (exact
+// for a planar quad, whose normal the corners' in-plane moves do not turn).
+SoftminTerms quad_softmin_terms(const std::array<Vec3, 4>& quad, double beta,
+                                std::array<Vec3, 4>& gradient);
 
 }  // namespace volmesh::hexdc_detail

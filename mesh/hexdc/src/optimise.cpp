@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 #include <oneapi/tbb/blocked_range.h>
@@ -11,6 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "active_set.hpp"
 #include "feature_point.hpp"
 #include "hex_energy.hpp"
 #include "hex_mesh_geometry.hpp"
@@ -25,9 +25,6 @@ namespace {
 using namespace hexdc_detail;
 using Eigen::VectorXd;
 
-// Hexes (quads, nodes) per parallel task: a few thousand, so that a small mesh runs on one
-// thread and a large one wakes the others a few times per evaluation, not for every block.
-constexpr std::size_t kGrain = 512;
 constexpr std::size_t kLbfgsMemory = 7;
 // Armijo's sufficient decrease, and the halvings of a step before the line search gives up.
 constexpr double kArmijo = 1e-4;
@@ -38,12 +35,10 @@ constexpr double kMaxMove = 0.3;
 // the floor keeps it above round-off once every tet is positive.
 constexpr double kEpsilonOfDet = 0.2;
 constexpr double kMinEpsilon = 1e-9;
-// Garanzha et al.'s least decrease rate σ of ε per round, and their stop: every tet positive
-// and the energy changing by less than this relative amount in a round; or, here, this many
-// rounds with every tet positive (the optimisation then raises the worst).
+// Garanzha et al.'s least decrease rate σ of ε per round. Their rounds go on until the energy
+// settles; here they stop at the first with every tet positive: the optimisation then raises the
+// worst measures, which further rounds of the barrier would trade for less total distortion.
 constexpr double kMinSigma = 0.1;
-constexpr double kSettled = 1e-5;
-constexpr int kPositiveRounds = 5;
 // An iteration lowering the energy by less than this relative amount ends the L-BFGS run.
 constexpr double kStalled = 1e-9;
 // The untangling stops, and the optimisation's line search accepts only points, with every tet
@@ -63,21 +58,21 @@ constexpr double kShortestSnapped = 0.05;
 // The optimisation lets no hex edge fall below this fraction of its hex's mean edge at the start
 // (or below its start, if shorter).
 constexpr double kShortestEdge = 1e-3;
+// The untangling moves the nodes within this many hex rings of the hexes found folded so far;
+// the rest of the mesh stays as it is.
+constexpr int kUntangleRings = 3;
+// An untangling attempt that leaves the count of folded hexes above its least for this many
+// rounds ends, and the next releases their features.
+constexpr int kStuckRounds = 4;
+// An optimisation pass ends, and a new one is chosen, when the least term has risen by this share
+// of the span that chose its nodes (kActiveSpan / β).
+constexpr double kReselectShare = 0.5;
+// A round ends when the soft minimum rises by less than kStallDrop (in scaled Jacobian units)
+// over kStallWindow iterations.
+constexpr int kStallWindow = 20;
+constexpr double kStallDrop = 1e-4;
 // Share of the run the untangling takes, the optimisation the rest.
 constexpr double kUntangleShare = 0.5;
-
-enum class NodeKind : std::uint8_t { fixed, free, surface, crease };
-
-struct Problem {
-  HexMesh& mesh;
-  const SurfaceProjector& surface;
-  std::vector<std::vector<Index>> hexes;  // hexes of each node
-  std::vector<std::vector<Index>> quads;  // boundary quads of each node
-  std::vector<NodeKind> kind;
-  std::vector<Vec3> crease;               // a crease node's direction
-  std::vector<double> reach;              // shortest edge at the node, at the start
-  std::vector<double> size;               // a hex's mean edge, at the start
-};
 
 // How each node may move: interior nodes freely; boundary nodes, with a surface, on it
 // (smooth), along their crease, or not at all (a corner); without a surface, not at all.
@@ -134,20 +129,23 @@ void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
   }
 }
 
-VectorXd flatten(const std::vector<Vec3>& points) {
-  VectorXd x(static_cast<Eigen::Index>(3 * points.size()));
-  for (std::size_t v = 0; v < points.size(); ++v) x.segment<3>(static_cast<Eigen::Index>(3 * v)) = points[v];
+VectorXd flatten(const Active& a, const std::vector<Vec3>& points) {
+  VectorXd x(static_cast<Eigen::Index>(3 * a.nodes.size()));
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    x.segment<3>(static_cast<Eigen::Index>(3 * i)) = points[static_cast<std::size_t>(a.nodes[i])];
   return x;
 }
 
-void unflatten(const VectorXd& x, std::vector<Vec3>& points) {
-  for (std::size_t v = 0; v < points.size(); ++v) points[v] = x.segment<3>(static_cast<Eigen::Index>(3 * v));
+void unflatten(const Active& a, const VectorXd& x, std::vector<Vec3>& points) {
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    points[static_cast<std::size_t>(a.nodes[i])] = x.segment<3>(static_cast<Eigen::Index>(3 * i));
 }
 
 // A node's part of a step or gradient restricted to how it may move.
-void restrict_moves(const Problem& p, VectorXd& d) {
-  for (std::size_t v = 0; v < p.kind.size(); ++v) {
-    auto part = d.segment<3>(static_cast<Eigen::Index>(3 * v));
+void restrict_moves(const Problem& p, const Active& a, VectorXd& d) {
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const auto v = static_cast<std::size_t>(a.nodes[i]);
+    auto part = d.segment<3>(static_cast<Eigen::Index>(3 * i));
     switch (p.kind[v]) {
       case NodeKind::free:
         break;
@@ -164,13 +162,6 @@ void restrict_moves(const Problem& p, VectorXd& d) {
         break;
     }
   }
-}
-
-std::array<Vec3, 4> quad_corners(const HexMesh& mesh, std::size_t q) {
-  std::array<Vec3, 4> corners;
-  for (std::size_t c = 0; c < 4; ++c)
-    corners[c] = mesh.points[static_cast<std::size_t>(mesh.boundary_faces[q][c])];
-  return corners;
 }
 
 // The least of the optimised measures around node v: its hexes' tet and centre measures and its
@@ -239,172 +230,64 @@ Index release_folded_features(Problem& p) {
   return released;
 }
 
-// The energy at mesh.points with its gradient, and the least tet measure there.
-struct Evaluation {
-  double energy = 0.0;
-  double least = 0.0;  // the least det J (untangling) or tet measure (optimisation)
-  // Optimisation: the least centre measure or boundary quad corner sine, the measures that may
-  // start below zero without a folded tet.
-  double least_other = 1.0;
-  // Optimisation: the least hex edge over its hex's mean edge at the start, which the scaled
-  // measures, ratios of lengths, do not see shrink.
-  double least_edge = 1.0;
-  VectorXd gradient;
-};
-
-// Per-hex values computed in parallel, each into its own slot, then summed in hex order.
-struct HexSlots {
-  std::vector<double> value, least;
-  std::vector<HexGradient> gradient;
-  explicit HexSlots(std::size_t hexes) : value(hexes), least(hexes), gradient(hexes) {}
-};
-
-void add_hex_gradients(const HexMesh& mesh, const std::vector<HexGradient>& gradient, double scale,
-                       VectorXd& total) {
-  for (std::size_t h = 0; h < mesh.cells.size(); ++h)
-    for (std::size_t c = 0; c < 8; ++c)
-      total.segment<3>(static_cast<Eigen::Index>(3 * mesh.cells[h][c])) += scale * gradient[h][c];
-}
-
-Evaluation barrier_energy(const Problem& p, const Barrier& barrier) {
-  const HexMesh& mesh = p.mesh;
-  HexSlots slots(mesh.cells.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.cells.size(), kGrain), [&](const auto& range) {
-    for (std::size_t h = range.begin(); h < range.end(); ++h) {
-      slots.gradient[h].fill(Vec3::Zero());
-      slots.least[h] = std::numeric_limits<double>::infinity();
-      slots.value[h] = hex_barrier(hex_corners(mesh, static_cast<Index>(h)), p.size[h], barrier,
-                                   slots.gradient[h], slots.least[h]);
-    }
-  });
-  Evaluation e;
-  e.energy = std::accumulate(slots.value.begin(), slots.value.end(), 0.0);
-  e.least = *std::min_element(slots.least.begin(), slots.least.end());
-  e.gradient = VectorXd::Zero(static_cast<Eigen::Index>(3 * mesh.points.size()));
-  add_hex_gradients(mesh, slots.gradient, 1.0, e.gradient);
-  return e;
-}
-
-// −(1/β) log Σ exp(−β q) over every hex's ten tet measures and centre measure and every boundary
-// quad's corner sines, negated: minimising it raises the soft minimum. `least` is the least tet
-// measure.
-Evaluation softmin_energy(const Problem& p, double beta) {
-  const HexMesh& mesh = p.mesh;
-  const std::size_t hexes = mesh.cells.size(), quads = mesh.boundary_faces.size();
-  HexSlots slots(hexes);
-  std::vector<double> centre(hexes), edge(hexes), quad_value(quads), quad_least(quads);
-  std::vector<std::array<Vec3, 4>> quad_gradient(quads);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
-    for (std::size_t h = range.begin(); h < range.end(); ++h) {
-      const auto corners = hex_corners(mesh, static_cast<Index>(h));
-      const auto q = hex_tet_qualities(corners);
-      slots.least[h] = *std::min_element(q.begin(), q.end());
-      centre[h] = hex_centre_quality(corners);
-      double shortest = std::numeric_limits<double>::infinity();
-      for (const auto& [a, b] : kHexEdges)
-        shortest = std::min(shortest, (corners[static_cast<std::size_t>(b)] -
-                                       corners[static_cast<std::size_t>(a)]).norm());
-      edge[h] = shortest / p.size[h];
-    }
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
-    for (std::size_t q = range.begin(); q < range.end(); ++q) {
-      const auto s = quad_sines(quad_corners(mesh, q));
-      quad_least[q] = *std::min_element(s.begin(), s.end());
-    }
-  });
-  Evaluation e;
-  e.least = *std::min_element(slots.least.begin(), slots.least.end());
-  e.least_other = *std::min_element(centre.begin(), centre.end());
-  e.least_edge = *std::min_element(edge.begin(), edge.end());
-  if (quads > 0)
-    e.least_other = std::min(e.least_other, *std::min_element(quad_least.begin(), quad_least.end()));
-  const double shift = std::min(e.least, e.least_other);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexes, kGrain), [&](const auto& range) {
-    for (std::size_t h = range.begin(); h < range.end(); ++h) {
-      slots.gradient[h].fill(Vec3::Zero());
-      slots.value[h] = hex_softmin_terms(hex_corners(mesh, static_cast<Index>(h)), beta, shift,
-                                         slots.gradient[h]);
-    }
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quads, kGrain), [&](const auto& range) {
-    for (std::size_t q = range.begin(); q < range.end(); ++q) {
-      quad_gradient[q].fill(Vec3::Zero());
-      quad_value[q] = quad_softmin_terms(quad_corners(mesh, q), beta, shift, quad_gradient[q]);
-    }
-  });
-  const double sum = std::accumulate(slots.value.begin(), slots.value.end(), 0.0) +
-                     std::accumulate(quad_value.begin(), quad_value.end(), 0.0);
-  e.energy = -shift + std::log(sum) / beta;
-  e.gradient = VectorXd::Zero(static_cast<Eigen::Index>(3 * mesh.points.size()));
-  const double scale = 1.0 / (beta * sum);
-  add_hex_gradients(mesh, slots.gradient, scale, e.gradient);
-  for (std::size_t q = 0; q < quads; ++q)
-    for (std::size_t c = 0; c < 4; ++c)
-      e.gradient.segment<3>(static_cast<Eigen::Index>(3 * mesh.boundary_faces[q][c])) +=
-          scale * quad_gradient[q][c];
-  return e;
-}
-
 // The largest step along d that moves no node by more than kMaxMove of its reach.
-double step_cap(const Problem& p, const VectorXd& d) {
+double step_cap(const Problem& p, const Active& a, const VectorXd& d) {
   double cap = std::numeric_limits<double>::infinity();
-  for (std::size_t v = 0; v < p.reach.size(); ++v) {
-    const double move = d.segment<3>(static_cast<Eigen::Index>(3 * v)).norm();
-    if (move > 0.0) cap = std::min(cap, kMaxMove * p.reach[v] / move);
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const double move = d.segment<3>(static_cast<Eigen::Index>(3 * i)).norm();
+    if (move > 0.0) cap = std::min(cap, kMaxMove * p.reach[static_cast<std::size_t>(a.nodes[i])] / move);
   }
   return cap;
 }
 
-// L-BFGS on `evaluate` (an Evaluation of mesh.points) from mesh.points, the sliding nodes kept on
-// the surface, for at most `iterations` iterations; a point is accepted only when `feasible`
-// says so. Returns the iterations taken and leaves mesh.points at the last accepted point.
-template <class Evaluate, class Feasible, class Tick>
-int descend(const Problem& p, int iterations, const Evaluate& evaluate, const Feasible& feasible,
-            const Tick& tick, Evaluation& at) {
+// L-BFGS on `evaluate` (an Evaluation of mesh.points) over the active nodes from mesh.points,
+// for at most `iterations` iterations or until `stop` (given the accepted point and the
+// iterations done) says so; a point is accepted only when `feasible` says so. Returns the
+// iterations taken and leaves mesh.points at the last accepted point.
+template <class Evaluate, class Feasible, class Tick, class Stop>
+int descend(const Problem& p, const Active& a, int iterations, const Evaluate& evaluate,
+            const Feasible& feasible, const Tick& tick, const Stop& stop, Evaluation& at) {
   std::vector<Vec3>& points = p.mesh.points;
   Lbfgs lbfgs(kLbfgsMemory);
-  VectorXd x = flatten(points);
+  VectorXd x = flatten(a, points);
   VectorXd g = at.gradient;
-  restrict_moves(p, g);
+  restrict_moves(p, a, g);
   int done = 0;
-  for (; done < iterations; ++done) {
+  while (done < iterations) {
     tick(done);
     VectorXd d = lbfgs.direction(g);
-    restrict_moves(p, d);
+    restrict_moves(p, a, d);
     if (!(g.dot(d) < 0.0)) {
       lbfgs.reset();
       d = -g;
     }
     if (!(g.dot(d) < 0.0)) break;  // no descent left in the allowed moves
     double alpha = std::min(lbfgs.empty() ? std::numeric_limits<double>::infinity() : 1.0,
-                            step_cap(p, d));
+                            step_cap(p, a, d));
     bool accepted = false;
     Evaluation trial;
     for (int k = 0; k <= kHalvings && !accepted; ++k, alpha *= 0.5) {
-      unflatten(x + alpha * d, points);
+      unflatten(a, x + alpha * d, points);
       trial = evaluate();
-      const VectorXd moved = flatten(points) - x;
+      const VectorXd moved = flatten(a, points) - x;
       accepted = feasible(trial) &&
                  trial.energy <= at.energy + kArmijo * std::min(g.dot(moved), 0.0) &&
                  trial.energy < at.energy;
     }
     if (!accepted) {
-      unflatten(x, points);
+      unflatten(a, x, points);
       break;
     }
-    const VectorXd x_new = flatten(points);
+    ++done;
+    const VectorXd x_new = flatten(a, points);
     VectorXd g_new = trial.gradient;
-    restrict_moves(p, g_new);
+    restrict_moves(p, a, g_new);
     lbfgs.push(x_new - x, g_new - g);
     const double drop = at.energy - trial.energy;
     x = x_new;
     g = std::move(g_new);
     at = std::move(trial);
-    if (drop <= kStalled * std::abs(at.energy)) {
-      ++done;
-      break;
-    }
+    if (drop <= kStalled * std::abs(at.energy) || stop(at, done)) break;
   }
   return done;
 }
@@ -414,6 +297,18 @@ double least_scaled_jacobian(const HexMesh& mesh) {
   for (Index h = 0; h < mesh.num_cells(); ++h)
     least = std::min(least, hex_scaled_jacobian(hex_corners(mesh, h)));
   return least;
+}
+
+// Marks the corners of every hex with a tet measure not above kPositive; returns how many hexes.
+Index mark_folded(const Problem& p, std::vector<char>& marked) {
+  Index folded = 0;
+  for (Index h = 0; h < p.mesh.num_cells(); ++h) {
+    const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
+    if (*std::min_element(q.begin(), q.end()) > kPositive) continue;
+    ++folded;
+    for (const Index v : p.mesh.cells[static_cast<std::size_t>(h)]) marked[static_cast<std::size_t>(v)] = 1;
+  }
+  return folded;
 }
 
 Index count_negative(const HexMesh& mesh) {
@@ -444,74 +339,105 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   stats.min_scaled_jacobian_before = least_scaled_jacobian(mesh);
   const std::vector<Vec3> given = mesh.points;
 
-  // 1. Untangling: Garanzha et al.'s rounds, ε following the least determinant.
+  const Active all = everything(p);
+
+  // 1. Untangling: Garanzha et al.'s rounds, ε following the least determinant, over the nodes
+  // near the hexes found folded so far.
   Barrier barrier{.epsilon = 0.0, .theta = options.theta};
-  Evaluation at = barrier_energy(p, barrier);
+  Evaluation at = barrier_energy(p, all, barrier);
   barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
-  at = barrier_energy(p, barrier);
+  at = barrier_energy(p, all, barrier);
   stats.untangle_energy_before = at.energy;
   const auto any_point = [](const Evaluation&) { return true; };
+  const auto no_tick = [](int) {};
+  const auto no_stop = [](const Evaluation&, int) { return false; };
+  std::vector<char> near_folds(mesh.points.size(), 0);
   // A mesh whose tets are all positive goes straight to the optimisation, which raises its worst
   // measures: the barrier's rounds would trade them for a lower total distortion. A mesh left
   // folded has the feature nodes of its folded hexes released onto the surface, and is
   // untangled again.
   for (int attempt = 0; attempt < kUntangleAttempts && at.least <= kPositive; ++attempt) {
     if (attempt > 0) stats.features_released += release_folded_features(p);
-    int positive_rounds = 0;
+    int stuck_rounds = 0;
+    Index fewest_folded = std::numeric_limits<Index>::max();
     for (int round = 0; round < options.untangle_rounds; ++round) {
       report(options.progress, "untangling",
              kUntangleShare * round / std::max(options.untangle_rounds, 1));
+      const Index folded = mark_folded(p, near_folds);
+      Active active = grow_active(p, near_folds, kUntangleRings);
+      freeze_barrier(p, barrier, active);
+      at = barrier_energy(p, active, barrier);
       const double before = at.energy;
-      stats.untangle_iterations += descend(
-          p, options.untangle_iterations, [&] { return barrier_energy(p, barrier); }, any_point,
-          [](int) {}, at);
+      stats.untangle_iterations +=
+          descend(p, active, options.untangle_iterations,
+                  [&] { return barrier_energy(p, active, barrier); }, any_point, no_tick, no_stop, at);
       snap(p, kPositive);
-      at = barrier_energy(p, barrier);
+      at = barrier_energy(p, all, barrier);
       ++stats.untangle_rounds;
       const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
       const double d = at.least, root = std::hypot(d, barrier.epsilon);
       barrier.epsilon *= d >= 0.0 ? 1.0 - sigma : 1.0 - sigma * root / (std::abs(d) + root);
       barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
-      const double settled = std::abs(before - at.energy) / std::abs(at.energy);
-      at = barrier_energy(p, barrier);
-      positive_rounds = d > kPositive ? positive_rounds + 1 : 0;
-      if (positive_rounds > 0 && (settled < kSettled || positive_rounds == kPositiveRounds)) break;
+      at = barrier_energy(p, all, barrier);
+      if (d > kPositive) break;
+      // Folds that rounds on end do not reduce wait for their features' release.
+      stuck_rounds = folded < fewest_folded ? 0 : stuck_rounds + 1;
+      fewest_folded = std::min(fewest_folded, folded);
+      if (attempt + 1 < kUntangleAttempts && stuck_rounds == kStuckRounds) break;
     }
     if (at.least <= kPositive) {
       // The last round's ε may hide a fold the barrier has not yet seen: restart from a fresh ε.
       barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
-      at = barrier_energy(p, barrier);
+      at = barrier_energy(p, all, barrier);
     }
   }
   stats.untangle_energy_after = at.energy;
 
   // 2. The worst measure raised, no tet allowed to turn negative: rounds of a sharper soft
   // minimum each (its gap to the true minimum, log(terms) / β, halves each round), the sliding
-  // nodes taken back onto the surface between them.
+  // nodes taken back onto the surface between them. Each round runs in passes over the nodes
+  // near the worst terms (select_softmin), a new pass when the least term has risen by half the
+  // span that chose them, and ends when the soft minimum stalls.
   double beta = options.softmin_sharpness;
-  at = softmin_energy(p, beta);
+  at = softmin_energy(p, all, beta);
   stats.min_quality_before = at.least;
   stats.quality_energy_before = at.energy;
   const int budget = std::max(options.quality_iterations * options.sharpening_rounds, 1);
+  const auto tick = [&](int done) {
+    report(options.progress, "optimisation",
+           kUntangleShare + (1.0 - kUntangleShare) * (stats.quality_iterations + done) / budget);
+  };
   for (int round = 0; round < options.sharpening_rounds && at.least > kPositive; ++round) {
-    const int spent = stats.quality_iterations;
-    const auto tick = [&](int done) {
-      report(options.progress, "optimisation",
-             kUntangleShare + (1.0 - kUntangleShare) * (spent + done) / budget);
-    };
     // A hex's centre or a boundary quad's corner may not fold, nor a folded one get worse.
     const double other_floor = std::min(at.least_other, kPositive);
     // Nor an edge shrink toward nothing.
     const double edge_floor = std::min(at.least_edge, kShortestEdge);
-    stats.quality_iterations += descend(
-        p, options.quality_iterations, [&] { return softmin_energy(p, beta); },
-        [&](const Evaluation& e) {
-          return e.least > kPositive && e.least_other >= other_floor && e.least_edge >= edge_floor;
-        },
-        tick, at);
+    const auto feasible = [&](const Evaluation& e) {
+      return e.least > kPositive && e.least_other >= other_floor && e.least_edge >= edge_floor;
+    };
+    for (int left = options.quality_iterations; left > 0;) {
+      double least = 0.0;
+      const Active active = select_softmin(p, beta, least);
+      if (active.nodes.empty()) break;
+      at = softmin_energy(p, active, beta);
+      const double next_pass = least + kReselectShare * kActiveSpan / beta;
+      bool risen = false;
+      std::vector<double> energies{at.energy};
+      const auto stop = [&](const Evaluation& e, int done) {
+        energies.push_back(e.energy);
+        risen = std::min(e.least, e.least_other) > next_pass;
+        return risen || (done >= kStallWindow &&
+                         energies[static_cast<std::size_t>(done - kStallWindow)] - e.energy < kStallDrop);
+      };
+      const int done = descend(p, active, left, [&] { return softmin_energy(p, active, beta); },
+                               feasible, tick, stop, at);
+      stats.quality_iterations += done;
+      left -= done;
+      if (!risen) break;
+    }
     stats.held_off_surface = snap(p, std::min(at.least, at.least_other));
     beta *= kSharpening;
-    at = softmin_energy(p, beta);
+    at = softmin_energy(p, all, beta);
   }
   stats.min_quality_after = at.least;
   stats.quality_energy_after = at.energy;

@@ -6,15 +6,20 @@
 //  1. Untangling, when a tet is not positive: L-BFGS on the barrier energy of Garanzha et al.
 //     ("Foldover-free maps in 50 lines of code", 2021) over the tets, each against its shape in
 //     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
-//     rises (their rule), until every tet is positive and the energy settles or five rounds
-//     passed with every tet positive. A mesh already untangled skips it: the barrier trades the
-//     worst measures for less total distortion, and the optimisation raises the worst. If tets
-//     are still folded, the crease and corner nodes of their hexes are released (they slide on
-//     the surface as the others do) and the untangling runs once more.
+//     rises (their rule), until a round leaves every tet positive. Each round moves the nodes
+//     within three hex rings of the hexes found folded so far; the rest of the mesh stays. A
+//     mesh already untangled skips it: the barrier trades the worst measures for less total
+//     distortion, and the optimisation raises the worst. If tets are still folded (or their
+//     count has not fallen for four rounds), the crease and corner nodes of their hexes are
+//     released (they slide on the surface as the others do) and the untangling runs once more.
 //  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of every term of Verdict's scaled
 //     Jacobian (the eight corners and the centre's principal axes), the two inner tets (scaled
 //     to 1 in a cube) and the sines of the boundary quads' angles (below 180°), raising the
-//     worst of them, in rounds of a sharper soft minimum (β doubled each round). Its line search
+//     worst of them, in rounds of a sharper soft minimum (β doubled each round). Each round runs
+//     in passes over the nodes of the terms within 16/β of the least (whose weight in the
+//     gradient is above e^-16 of the least's) and one hex ring around them, the other terms held
+//     as they are; a new pass starts when the least has risen by half that span, and the round
+//     ends when the soft minimum rises by less than 1e-4 in 20 iterations. Its line search
 //     never accepts a point with a tet that is not positive, nor one where a centre or a
 //     boundary quad corner folds (or a folded one gets worse), nor one where a hex edge falls
 //     below 1e-3 of its hex's mean edge (the scaled measures, ratios of lengths, let two nodes
@@ -34,9 +39,9 @@
 namespace volmesh {
 
 struct OptimiseOptions {
-  int untangle_rounds = 40;         // ε updates, each an L-BFGS run
+  int untangle_rounds = 40;         // ε updates per attempt, each an L-BFGS run
   int untangle_iterations = 50;     // L-BFGS iterations per round
-  int quality_iterations = 150;     // L-BFGS iterations of the soft minimum, per round
+  int quality_iterations = 150;     // L-BFGS iterations of the soft minimum, at most, per round
   double theta = 1.0 / 128.0;       // the barrier's volume weight (Garanzha et al.'s)
   double softmin_sharpness = 40.0;  // β of the first round: weights fall by e per 1/β
   int sharpening_rounds = 4;        // rounds of the soft minimum, β doubled each
