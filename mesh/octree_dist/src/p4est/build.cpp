@@ -96,10 +96,7 @@ DistributedOctree build_distributed_octree(const Domain& domain, const OctreeOpt
   if (!options.surfaces.empty()) forget_states(p);
   st.graded_levels = grade_rounds(p, options.cells_between_levels);
 
-  {  // the regions of the stages before are mostly of nodes split since
-    InterfaceQuery query(frame, domain);
-    classify_leaves(p, query);
-  }
+  classify_leaves(p, frame, domain);
   p8est_partition(p, 0, weigh_by_cut);
   out.rank = p->mpirank;
   out.ranks = p->mpisize;

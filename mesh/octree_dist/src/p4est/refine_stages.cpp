@@ -26,13 +26,6 @@ bool InterfaceQuery::on_interface(const OctreeLeaf& leaf) {
   return false;
 }
 
-void classify_leaves(p8est_t* forest, InterfaceQuery& query) {
-  for_each_leaf(forest, [&query](p8est_quadrant_t& q) {
-    LeafData& d = leaf_data(q);
-    if (d.state == LeafState::unknown) d.state = query.corners_differ(to_leaf(q)) ? LeafState::cut : LeafState::uncut;
-  });
-}
-
 namespace {
 
 struct InterfaceStage {

@@ -17,10 +17,9 @@ class InterfaceQuery {
   // `frame`: a tree with the octree's root cube, for world coordinates.
   InterfaceQuery(const Octree& frame, const Domain& domain) : frame_(frame), domain_(domain) {}
   bool on_interface(const OctreeLeaf& leaf);
-  // The criterion's first half alone: the leaves the cut-cell mesher cuts.
-  bool corners_differ(const OctreeLeaf& leaf);
 
  private:
+  bool corners_differ(const OctreeLeaf& leaf);
   Index region(const GridPoint& p);
 
   const Octree& frame_;
@@ -36,10 +35,11 @@ int refine_toward_interfaces(p8est_t* forest, InterfaceQuery& query, int level);
 // Splits the leaves below `level` that overlap the box with positive volume, balanced.
 int refine_into_box(p8est_t* forest, const Octree& frame, const BoxFront& front);
 
-// Each leaf's state where unknown: cut when its corners lie in different regions. The
-// crossings of the edges, twelve queries of the domain per leaf, are left out: a leaf whose
-// edges an interface crosses between corners of one region is rare, and for the partition's
-// weights not worth asking every leaf of a uniform level about.
-void classify_leaves(p8est_t* forest, InterfaceQuery& query);
+// Each leaf's state where unknown: cut when its corners lie in different regions (as
+// InterfaceQuery::corners_differ). The crossings of the edges, twelve queries of the domain
+// per leaf, are left out: a leaf whose edges an interface crosses between corners of one
+// region is rare, and for the partition's weights not worth asking every leaf of a uniform
+// level about. `frame`: a tree with the octree's root cube. In classify_leaves.cpp.
+void classify_leaves(p8est_t* forest, const Octree& frame, const Domain& domain);
 
 }  // namespace volmesh::octree_dist
