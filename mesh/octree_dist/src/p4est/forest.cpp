@@ -53,8 +53,10 @@ int refine_until_stable(p8est_t* forest, p8est_refine_t refine_fn, void* context
   for (;;) {
     const p4est_gloidx_t before = forest->global_num_quadrants;
     p8est_refine(forest, 1, refine_fn, init_leaf);
-    p8est_balance(forest, P8EST_CONNECT_EDGE, init_leaf);
+    // A forest the refinement left as it was is still balanced (as it came in, or from the
+    // round before): its balance would be a pass over every leaf for nothing.
     if (forest->global_num_quadrants == before) break;
+    p8est_balance(forest, P8EST_CONNECT_EDGE, init_leaf);
     ++rounds;
   }
   forest->user_pointer = nullptr;

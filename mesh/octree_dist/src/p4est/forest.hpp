@@ -53,9 +53,9 @@ void for_each_leaf(p8est_t* forest, F&& f) {
 }
 
 // Rounds of p8est_refine (recursive, refine_fn seeing `context` as the forest's user
-// pointer) and p8est_balance across faces and edges, until a round leaves the forest as it
-// was: the coarsest balanced refinement in which refine_fn selects no leaf. Returns the
-// rounds that split leaves.
+// pointer) and p8est_balance across faces and edges, until a refinement leaves the forest as
+// it was: the coarsest balanced refinement in which refine_fn selects no leaf. The forest
+// must come in balanced. Returns the rounds that split leaves.
 int refine_until_stable(p8est_t* forest, p8est_refine_t refine_fn, void* context);
 
 // Every leaf's state back to unknown (for a stage with another domain).
