@@ -96,6 +96,13 @@ void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
       p.size[h] += length / static_cast<double>(kHexEdges.size());
     }
   }
+  // A node on a collapsed edge (two nodes the projection took onto one point) would otherwise
+  // cap every step of the descent at nothing (step_cap) and probe the surface at round-off.
+  for (std::size_t h = 0; h < mesh.cells.size(); ++h)
+    for (const Index v : mesh.cells[h]) {
+      double& reach = p.reach[static_cast<std::size_t>(v)];
+      reach = std::max(reach, kShortestEdge * p.size[h]);
+    }
   const double corner_span = kCornerSpan * (1.0 - cos_feature);
   for (std::size_t v = 0; v < n; ++v) {
     if (hexes[v].empty()) continue;
