@@ -316,12 +316,4 @@ long long delete_covered(AuxGrid& g, const std::array<Vec3, 4>& tet, int stride,
   return count;
 }
 
-long long delete_covered(AuxGrid& g, const std::array<Vec3, 4>& tet, int stride,
-                         std::vector<Vec3>& on_lattice) {
-  std::vector<LatticePoint> weighted;
-  const long long count = delete_covered(g, tet, stride, weighted);
-  for (const LatticePoint& x : weighted) on_lattice.push_back(x.p);
-  return count;
-}
-
 }  // namespace volmesh::tet::front

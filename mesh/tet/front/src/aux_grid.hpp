@@ -78,8 +78,5 @@ bool deleted_strictly_inside(const AuxGrid& grid, const std::array<Vec3, 4>& tet
 // counting lattice (the ones count_live_in_ball counts), with their weights, to `on_lattice`.
 long long delete_covered(AuxGrid& grid, const std::array<Vec3, 4>& tet, int stride,
                          std::vector<LatticePoint>& on_lattice);
-// The same, the lattice points' places only.
-long long delete_covered(AuxGrid& grid, const std::array<Vec3, 4>& tet, int stride,
-                         std::vector<Vec3>& on_lattice);
 
 }  // namespace volmesh::tet::front
