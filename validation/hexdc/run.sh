@@ -17,6 +17,7 @@
 #   HEXDC_PARTS="paper sweep snappy pictures"   the parts to run (default: all four)
 #   HEXDC_LEVELS="4 5"                          the sweep's levels
 #   HEXDC_SWEEP="all" | "named" | "NAME ..."    the sweep's surfaces (named: the five below)
+#   HEXDC_TIMEOUT=1200                          seconds a run may take before it counts as refused
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
@@ -30,6 +31,7 @@ export WM_PROJECT_DIR=${WM_PROJECT_DIR:-/usr/share/openfoam}  # where checkMesh 
 PARTS=${HEXDC_PARTS:-paper sweep snappy pictures}
 SWEEP_LEVELS=${HEXDC_LEVELS:-4 5}
 SWEEP=${HEXDC_SWEEP:-all}
+TIMEOUT=${HEXDC_TIMEOUT:-1200}
 NAMED="elephant fandisk knot1 anchor femur"
 PAPER_FIELD=builtin:ball  # stands in for the paper's unpublished 65^3 volume file
 PAPER_DIM=6               # 2^6 + 1 = 65 samples per axis
@@ -59,8 +61,9 @@ build_volmesh
 hexdc() {  # name domain level output [options]
   local status=0
   /usr/bin/time -f "%e %U %S" -o "$OUT/$1.time" \
-    "$VOLMESH" mesh hexdc "$2" --level "$3" -o "$4" --json -q "${@:5}" \
+    timeout "$TIMEOUT" "$VOLMESH" mesh hexdc "$2" --level "$3" -o "$4" --json -q "${@:5}" \
     > "$OUT/$1.json" 2> "$OUT/$1.err" || status=$?
+  [ "$status" = 124 ] && echo "error: not finished within ${TIMEOUT} s" >> "$OUT/$1.err"
   [ "$status" = 0 ] || echo "{\"exit\": $status}" > "$OUT/$1.json"
   return 0
 }
