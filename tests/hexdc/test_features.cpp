@@ -316,5 +316,22 @@ TEST(FeaturePins, AFoldBesideAChainIsUntangledWithThePinsKept) {
   EXPECT_EQ(test_hexdc::invalid_hexes(box.mesh), 0);
 }
 
+// A domain without triangles has no creases to chain: the optimiser finds the box's edges and
+// corners from the surface's normals as without the layer.
+TEST(FeaturePins, NoPinnedNodeLeavesTheNormalsToFindTheFeatures) {
+  HexMesh mesh = box_hexes(4);
+  pillow_boundary(mesh);
+  project_boundary(mesh, test_fields::closest_on_box);
+  const SurfaceFeatures none;
+  const FeatureLayer no_chains;
+  OptimiseOptions options;
+  options.features = &none;
+  options.feature_layer = &no_chains;
+  const OptimiseStats stats = optimise_hexes(mesh, test_fields::closest_on_box, options);
+  EXPECT_EQ(stats.pinned_nodes, 0);
+  EXPECT_EQ(stats.corner_nodes, 8);
+  EXPECT_GT(stats.crease_nodes, 0);
+}
+
 }  // namespace
 }  // namespace volmesh

@@ -8,7 +8,7 @@ namespace volmesh::hexdc_detail {
 FeaturePins feature_pins(std::size_t nodes, const SurfaceFeatures* features,
                          const FeatureLayer* layer) {
   FeaturePins pins;
-  if (features == nullptr || layer == nullptr) return pins;
+  if (features == nullptr || layer == nullptr || layer->pinned.empty()) return pins;
   pins.features = features;
   pins.crease.assign(nodes, kNotPinned);
   pins.corner.assign(nodes, Vec3::Zero());

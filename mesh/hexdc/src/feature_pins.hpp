@@ -21,7 +21,8 @@ struct FeaturePins {
 };
 
 // The pins of `layer`'s chains and corner nodes on `features`, for a mesh of `nodes` nodes; a
-// node on two chains stays on the first one's crease. No pins without either.
+// node on two chains stays on the first one's crease. No pins without either or without a
+// pinned node (the optimiser then finds creases from the normals).
 FeaturePins feature_pins(std::size_t nodes, const SurfaceFeatures* features,
                          const FeatureLayer* layer);
 
