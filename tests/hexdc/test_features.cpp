@@ -17,7 +17,9 @@
 #include "volmesh/core/convert.hpp"
 #include "volmesh/hexdc/features.hpp"
 #include "volmesh/hexdc/mesher.hpp"
+#include "volmesh/hexdc/optimise.hpp"
 #include "volmesh/hexdc/pillow.hpp"
+#include "volmesh/hexdc/project.hpp"
 
 namespace volmesh {
 namespace {
@@ -147,15 +149,24 @@ double distance_to_boundary_edges(const HexMesh& mesh, const Vec3& a, const Vec3
   return worst;
 }
 
+Eigen::Matrix3d turning(double turn) {
+  return Eigen::AngleAxisd(turn, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+}
+
+// The sharp features of the box turned by `turn` about the axis (1, 2, 3).
+SurfaceFeatures turned_box_features(double turn) {
+  TriSurface surface = box_surface();
+  for (Vec3& p : surface.points) p = turning(turn) * p;
+  return sharp_features(surface, feature_angle_degrees());
+}
+
 // The box turned by `turn` about the axis (1, 2, 3): its edges across the octree's.
 HexdcResult box_mesh(bool crease_layer, double turn = 0.0) {
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(turn, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
-  TriSurface surface = box_surface();
-  for (Vec3& p : surface.points) p = r * p;
+  const Eigen::Matrix3d r = turning(turn);
   HexdcOptions options;
   options.level = 4;
   options.source = "box.off";
-  options.features = sharp_features(surface, feature_angle_degrees());
+  options.features = turned_box_features(turn);
   options.crease_layer = crease_layer;
   return hexdc_mesh(
       test_fields::sample_paper_cube([&](const Vec3& p) { return test_fields::box_distance(r.transpose() * p); }),
@@ -212,6 +223,114 @@ TEST(FeatureLayer, BoxEdgesRunAlongHexEdgesAndItsCornersAreNodes) {
         nearest = std::min(nearest, (r.mesh.points[static_cast<std::size_t>(v)] - corner).norm());
     EXPECT_LT(nearest, kOnEdges * side);
   }
+}
+
+// Of the box's side: a pinned node on its feature, up to round-off.
+constexpr double kOnFeature = 1e-9;
+
+// The largest distance of `layer`'s chain nodes from their creases and of its corner nodes from
+// their corners, relative to the box's side.
+double farthest_pin(const HexMesh& mesh, const SurfaceFeatures& features, const FeatureLayer& layer) {
+  double worst = 0.0;
+  for (const FeatureChain& chain : layer.chains)
+    for (const Index v : chain.nodes) {
+      const Vec3& p = mesh.points[static_cast<std::size_t>(v)];
+      const auto& crease = features.creases[static_cast<std::size_t>(chain.crease)];
+      const Vec3 ab = crease.back() - crease.front();
+      const double t = std::clamp((p - crease.front()).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      worst = std::max(worst, (p - (crease.front() + t * ab)).norm());
+    }
+  for (const PinnedNode& pin : layer.pinned)
+    if (pin.corner) worst = std::max(worst, (mesh.points[static_cast<std::size_t>(pin.node)] - pin.target).norm());
+  return worst / (2.0 * kBoxHalfSide);
+}
+
+TEST(FeaturePins, BoxChainsEndOnTheirCreasesAndCornersOnTheirCorners) {
+  const HexdcResult r = box_mesh(true);
+  EXPECT_EQ(test_hexdc::invalid_hexes(r.mesh), 0);
+  EXPECT_EQ(r.optimisation.pinned_nodes, static_cast<Index>(r.feature_layer.pinned.size()));
+  EXPECT_EQ(r.optimisation.pinned_off_features, 0);
+  EXPECT_EQ(r.optimisation.features_released, 0);
+  EXPECT_LT(farthest_pin(r.mesh, turned_box_features(0.0), r.feature_layer), kOnFeature);
+  EXPECT_EQ(r.capture.captured, 12);
+}
+
+// Turned, some chain nodes start off their creases (the projection's guard held them back in
+// the folded layer): the optimiser keeps every crease the projection captured.
+TEST(FeaturePins, TurnedBoxKeepsTheCreasesTheProjectionCaptured) {
+  const HexdcResult r = box_mesh(true, kTurn);
+  EXPECT_EQ(test_hexdc::invalid_hexes(r.mesh), 0);
+  EXPECT_GE(r.improved.min_scaled_jacobian, 0.3);
+  EXPECT_EQ(r.optimisation.features_released, 0);
+  EXPECT_LT(r.optimisation.pinned_off_features, r.projection.pinned_held_back);
+  EXPECT_GE(r.capture.captured, r.capture_projected.captured);
+}
+
+// The box's layer following its creases, its pinned nodes projected onto them, then one hex at
+// a chain node folded: its node opposite the chain node taken through the boundary.
+struct FoldedBox {
+  HexMesh mesh;
+  SurfaceFeatures features = sharp_features(box_surface(), feature_angle_degrees());
+  FeatureLayer layer = {};
+};
+
+FoldedBox folded_box() {
+  FoldedBox box{box_hexes(4)};
+  PillowOptions pillow;
+  pillow.features = &box.features;
+  pillow.follow_features = true;
+  pillow_boundary(box.mesh, pillow, &box.layer);
+  ProjectOptions project;
+  project.pinned = &box.layer.pinned;
+  project_boundary(box.mesh, test_fields::closest_on_box, project);
+  const Index chain_node = box.layer.chains.front().nodes[1];
+  for (const auto& cell : box.mesh.cells) {
+    const auto at = std::find(cell.begin(), cell.end(), chain_node);
+    if (at == cell.end()) continue;
+    const auto c = static_cast<std::size_t>(at - cell.begin());
+    // The hex corner opposite c (corners 0-3 around the bottom, 4-7 above them).
+    const std::size_t opposite = (c + 2) % 4 + (c < 4 ? 4 : 0);
+    Vec3& p = box.mesh.points[static_cast<std::size_t>(cell[opposite])];
+    const Vec3& q = box.mesh.points[static_cast<std::size_t>(chain_node)];
+    p = q + 1.5 * (q - p);
+    break;
+  }
+  return box;
+}
+
+// The box's right angles below the optimiser's feature angle: its normals find no crease, only
+// the pins keep the chain nodes on the edges.
+constexpr double kBlindAngle = 100.0;
+
+TEST(FeaturePins, AFoldBesideAChainIsUntangledWithThePinsKept) {
+  FoldedBox box = folded_box();
+  ASSERT_GT(test_hexdc::invalid_hexes(box.mesh), 0);
+  OptimiseOptions options;
+  options.feature_angle_deg = kBlindAngle;
+  options.features = &box.features;
+  options.feature_layer = &box.layer;
+  const OptimiseStats stats = optimise_hexes(box.mesh, test_fields::closest_on_box, options);
+  EXPECT_EQ(stats.features_released, 0);
+  EXPECT_EQ(stats.pinned_off_features, 0);
+  EXPECT_LT(farthest_pin(box.mesh, box.features, box.layer), kOnFeature);
+  EXPECT_EQ(test_hexdc::invalid_hexes(box.mesh), 0);
+}
+
+// A domain without triangles has no creases to chain: the optimiser finds the box's edges and
+// corners from the surface's normals as without the layer.
+TEST(FeaturePins, NoPinnedNodeLeavesTheNormalsToFindTheFeatures) {
+  HexMesh mesh = box_hexes(4);
+  pillow_boundary(mesh);
+  project_boundary(mesh, test_fields::closest_on_box);
+  const SurfaceFeatures none;
+  const FeatureLayer no_chains;
+  OptimiseOptions options;
+  options.features = &none;
+  options.feature_layer = &no_chains;
+  const OptimiseStats stats = optimise_hexes(mesh, test_fields::closest_on_box, options);
+  EXPECT_EQ(stats.pinned_nodes, 0);
+  EXPECT_EQ(stats.corner_nodes, 8);
+  EXPECT_GT(stats.crease_nodes, 0);
 }
 
 }  // namespace

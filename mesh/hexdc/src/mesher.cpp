@@ -82,7 +82,11 @@ HexdcResult mesh_stages(const VoxelGrid& field, const SurfaceProjector& surface,
   report(options.progress, "optimisation", kOptimiseStart);
   OptimiseOptions optimise;
   optimise.progress = part_of(options.progress, kOptimiseStart, kCheckStart);
-  if (options.crease_layer) optimise.feature_angle_deg = 0.5 * options.feature_angle_deg;
+  // The layer's chain and corner nodes kept on their features to the end.
+  if (options.crease_layer) {
+    optimise.features = &options.features;
+    optimise.feature_layer = &r.feature_layer;
+  }
   r.optimisation = optimise_hexes(r.mesh, surface, optimise);
   r.capture = crease_capture(r.mesh, options.features, r.feature_layer.chains);
 

@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "active_set.hpp"
+#include "feature_pins.hpp"
 #include "feature_point.hpp"
 #include "hex_energy.hpp"
 #include "hex_mesh_geometry.hpp"
@@ -73,10 +74,32 @@ constexpr int kStallWindow = 20;
 constexpr double kStallDrop = 1e-4;
 // Share of the run the untangling takes, the optimisation the rest.
 constexpr double kUntangleShare = 0.5;
+// A pinned node this close to its feature, relative to its shortest edge at the start, is on it.
+constexpr double kOnFeature = 1e-9;
 
-// How each node may move: interior nodes freely; boundary nodes, with a surface, on it
-// (smooth), along their crease, or not at all (a corner); without a surface, not at all.
-void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
+bool on_feature(const Problem& p, const FeaturePins& pins, std::size_t v) {
+  const Vec3& x = p.mesh.points[v];
+  return (pinned_point(pins, v, x) - x).norm() <= kOnFeature * p.reach[v];
+}
+
+// How pinned node v moves: on its feature, a corner node not at all and a chain node along its
+// crease's tangent at its closest point; off it (where the projection's guard held it back), on
+// the surface as a smooth node, until snap takes it onto its feature.
+void hold_pinned(Problem& p, const FeaturePins& pins, std::size_t v) {
+  if (!on_feature(p, pins, v)) {
+    p.kind[v] = p.surface ? NodeKind::surface : NodeKind::fixed;
+  } else if (pins.crease[v] == kCornerPin) {
+    p.kind[v] = NodeKind::fixed;
+  } else {
+    p.kind[v] = NodeKind::crease;
+    p.crease[v] = pinned_direction(pins, v, p.mesh.points[v]);
+  }
+}
+
+// How each node may move: interior nodes freely; pinned nodes as hold_pinned says; the other
+// boundary nodes, with a surface, on it (smooth) when there are pins, else on it, along the
+// crease their normals find or not at all (a corner); without a surface, not at all.
+void classify(Problem& p, const FeaturePins& pins, double cos_feature, OptimiseStats& stats) {
   const HexMesh& mesh = p.mesh;
   p.hexes = hexes_of_nodes(mesh);
   const std::vector<std::vector<Index>>& hexes = p.hexes;
@@ -111,7 +134,18 @@ void classify(Problem& p, double cos_feature, OptimiseStats& stats) {
       continue;
     }
     ++stats.boundary_nodes;
+    if (pinned(pins, v)) {
+      ++stats.pinned_nodes;
+      ++(pins.crease[v] == kCornerPin ? stats.corner_nodes : stats.crease_nodes);
+      hold_pinned(p, pins, v);
+      continue;
+    }
     if (!p.surface) continue;
+    // With chains, the normals' creases would fight them (a node beside a chain found on it).
+    if (!pins.crease.empty()) {
+      p.kind[v] = NodeKind::surface;
+      continue;
+    }
     const std::vector<Vec3> normals = surface_normals_at(mesh, p.quads[v], p.surface, v, p.reach[v]);
     Vec3 sum = Vec3::Zero();
     for (const Vec3& normal : normals) sum += normal;
@@ -190,21 +224,26 @@ double least_around(const Problem& p, std::size_t v) {
 // Takes the sliding boundary nodes, which step in their tangent planes (or along their creases)
 // and so leave a curved surface by the square of their steps, back onto it: each to its closest
 // point, in node order, unless that makes the least measure around it (least_around) fall below
-// the lesser of what it was and `floor` or an edge at it nearly collapses. Returns how many
-// stayed off.
-Index snap(const Problem& p, double floor) {
+// the lesser of what it was and `floor` or an edge at it nearly collapses. A pinned node goes
+// to its corner or its crease's closest point instead, under the same guard, and slides on along
+// the crease's tangent there (hold_pinned). Returns how many stayed off.
+Index snap(Problem& p, const FeaturePins& pins, double floor) {
   Index held = 0;
-  if (!p.surface) return held;
   std::vector<Vec3>& points = p.mesh.points;
+  const auto slides = [&](std::size_t v) {
+    return pinned(pins, v) ||
+           (p.surface && (p.kind[v] == NodeKind::surface || p.kind[v] == NodeKind::crease));
+  };
   std::vector<Vec3> targets(points.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), kGrain), [&](const auto& range) {
     for (std::size_t v = range.begin(); v < range.end(); ++v)
-      if (p.kind[v] == NodeKind::surface || p.kind[v] == NodeKind::crease)
+      if (pinned(pins, v))
+        targets[v] = pinned_point(pins, v, points[v]);
+      else if (slides(v))
         targets[v] = p.surface(points[v]);
   });
   for (std::size_t v = 0; v < points.size(); ++v) {
-    if (p.kind[v] != NodeKind::surface && p.kind[v] != NodeKind::crease) continue;
-    if (targets[v] == points[v]) continue;
+    if (!slides(v) || targets[v] == points[v]) continue;
     const double before = least_around(p, v);
     const Vec3 kept = points[v];
     points[v] = targets[v];
@@ -213,14 +252,24 @@ Index snap(const Problem& p, double floor) {
       points[v] = kept;
       ++held;
     }
+    if (pinned(pins, v)) hold_pinned(p, pins, v);
   }
   return held;
 }
 
+// The pinned nodes off their corner or crease.
+Index pinned_off_features(const Problem& p, const FeaturePins& pins) {
+  Index off = 0;
+  for (std::size_t v = 0; v < p.mesh.points.size(); ++v)
+    if (pinned(pins, v) && !on_feature(p, pins, v)) ++off;
+  return off;
+}
+
 // Makes the crease and corner nodes of every hex with a folded tet slide on the surface as the
 // smooth ones do: a fold whose corners are all held on features may have no way out otherwise.
-// Returns how many were released.
-Index release_folded_features(Problem& p) {
+// Pinned nodes stay on their features: a fold they hold is refused. Returns how many were
+// released.
+Index release_folded_features(Problem& p, const FeaturePins& pins) {
   Index released = 0;
   for (Index h = 0; h < p.mesh.num_cells(); ++h) {
     const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
@@ -228,6 +277,7 @@ Index release_folded_features(Problem& p) {
     for (const Index v : p.mesh.cells[static_cast<std::size_t>(h)]) {
       NodeKind& kind = p.kind[static_cast<std::size_t>(v)];
       if (p.quads[static_cast<std::size_t>(v)].empty() || !p.surface ||
+          pinned(pins, static_cast<std::size_t>(v)) ||
           (kind != NodeKind::crease && kind != NodeKind::fixed))
         continue;
       kind = NodeKind::surface;
@@ -341,7 +391,8 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   if (mesh.cells.empty()) return stats;
   const Clock::time_point start = Clock::now();
   Problem p{mesh, surface, {}, {}, {}, {}, {}, {}};
-  classify(p, cos_feature, stats);
+  const FeaturePins pins = feature_pins(mesh.points.size(), options.features, options.feature_layer);
+  classify(p, pins, cos_feature, stats);
   stats.invalid_tets_before = count_negative(mesh);
   stats.min_scaled_jacobian_before = least_scaled_jacobian(mesh);
   const std::vector<Vec3> given = mesh.points;
@@ -364,7 +415,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   // folded has the feature nodes of its folded hexes released onto the surface, and is
   // untangled again.
   for (int attempt = 0; attempt < kUntangleAttempts && at.least <= kPositive; ++attempt) {
-    if (attempt > 0) stats.features_released += release_folded_features(p);
+    if (attempt > 0) stats.features_released += release_folded_features(p, pins);
     int stuck_rounds = 0;
     Index fewest_folded = std::numeric_limits<Index>::max();
     for (int round = 0; round < options.untangle_rounds; ++round) {
@@ -378,7 +429,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
       stats.untangle_iterations +=
           descend(p, active, options.untangle_iterations,
                   [&] { return barrier_energy(p, active, barrier); }, any_point, no_tick, no_stop, at);
-      snap(p, kPositive);
+      snap(p, pins, kPositive);
       at = barrier_energy(p, all, barrier);
       ++stats.untangle_rounds;
       const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
@@ -442,7 +493,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
       left -= done;
       if (!risen) break;
     }
-    stats.held_off_surface = snap(p, std::min(at.least, at.least_other));
+    stats.held_off_surface = snap(p, pins, std::min(at.least, at.least_other));
     beta *= kSharpening;
     at = softmin_energy(p, all, beta);
   }
@@ -459,6 +510,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
     stats.invalid_tets_after = 0;
     stats.min_scaled_jacobian_after = stats.min_scaled_jacobian_before;
   }
+  stats.pinned_off_features = pinned_off_features(p, pins);
   stats.seconds = seconds_since(start);
   return stats;
 }

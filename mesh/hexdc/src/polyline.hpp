@@ -30,6 +30,31 @@ inline Vec3 closest_on_polyline(const Vec3& p, const std::vector<Vec3>& line) {
   return best;
 }
 
+// The unit direction of `line` (at least two points) at its point nearest p: its segment's there
+// or, where that point is a vertex joining two segments (a closed line's ends join), the mean of
+// theirs.
+inline Vec3 polyline_tangent(const Vec3& p, const std::vector<Vec3>& line) {
+  std::size_t nearest = 1;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const double d = (p - closest_on_segment(p, line[i - 1], line[i])).squaredNorm();
+    if (d < least) {
+      least = d;
+      nearest = i;
+    }
+  }
+  const auto direction = [&](std::size_t i) { return (line[i] - line[i - 1]).normalized(); };
+  const std::size_t last = line.size() - 1;
+  const bool closed = last > 1 && line.front() == line.back();
+  const Vec3 at = closest_on_segment(p, line[nearest - 1], line[nearest]);
+  Vec3 tangent = direction(nearest);
+  if (at == line[nearest] && (nearest < last || closed))
+    tangent += direction(nearest < last ? nearest + 1 : 1);
+  else if (at == line[nearest - 1] && (nearest > 1 || closed))
+    tangent += direction(nearest > 1 ? nearest - 1 : last);
+  return tangent.normalized();
+}
+
 inline double distance_to_polyline(const Vec3& p, const std::vector<Vec3>& line) {
   return (p - closest_on_polyline(p, line)).norm();
 }

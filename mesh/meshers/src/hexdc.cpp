@@ -172,9 +172,10 @@ const Registration registered{MesherInfo{
                  .min = 1.0,
                  .max = 90.0},
                 {.name = "crease-layer",
-                 .help = "make the buffer layer follow the creases: each a chain of hex edges, "
-                         "the faces between them pillowed again (more creases on hex edges, "
-                         "twice the layer's hexes, a lower worst scaled Jacobian)",
+                 .help = "make the buffer layer follow the creases: each a chain of hex edges "
+                         "kept on its crease through the optimisation, the faces between them "
+                         "pillowed again (more creases on hex edges, twice the layer's hexes; "
+                         "a fold the chains hold is refused)",
                  .type = OptionSpec::Type::flag},
                 {.name = "refine-box",
                  .help = "x0,y0,z0,x1,y1,z1: mark the nodes inside this box for refinement too "

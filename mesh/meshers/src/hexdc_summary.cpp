@@ -97,6 +97,9 @@ nlohmann::json features_summary(const HexdcResult& r) {
           {"chains", r.feature_layer.chains.size()},
           {"chain_edges", chain_edges},
           {"pinned_nodes", r.feature_layer.pinned.size()},
+          {"pinned_off_after_projection", r.projection.pinned_held_back},
+          {"pinned_in_optimisation", r.optimisation.pinned_nodes},
+          {"pinned_off_features", r.optimisation.pinned_off_features},
           {"patches_pillowed", r.feature_layer.patches_pillowed},
           {"strip_hexes", r.feature_layer.strip_hexes}};
 }

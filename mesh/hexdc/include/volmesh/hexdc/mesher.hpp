@@ -63,9 +63,9 @@ struct HexdcOptions {
   // The surface's sharp features (sharp_features at feature_angle_deg); empty when the domain
   // has no triangles. Their chains on the boundary are always found and their capture measured;
   // with crease_layer the buffer layer follows them (feature_layer.hpp), its chain and corner
-  // nodes are moved onto them first in the projection, and the optimiser keeps a node on a
-  // crease when its normals leave their mean by half the angle (the two faces' normals are the
-  // angle apart).
+  // nodes are moved onto them first in the projection, and the optimiser keeps them there
+  // (OptimiseOptions::feature_layer): chain nodes on their creases, corner nodes on their
+  // corners.
   SurfaceFeatures features;
   double feature_angle_deg = feature_angle_degrees();
   bool crease_layer = false;

@@ -29,11 +29,14 @@
 // closest point unless that would fold a tet or lower the worst measure (held_off_surface
 // counts those). A node is a crease or corner node when the surface's normals just beside it
 // (surface_normals_at, probed at a twentieth of its shortest edge) spread beyond the feature
-// angle: a smooth part stays smooth however coarse the mesh. Without a surface the boundary
-// nodes stay. The energies and gradients are summed over the hexes in parallel (TBB) into
+// angle: a smooth part stays smooth however coarse the mesh. Given the buffer layer's chains
+// (OptimiseOptions::feature_layer), the crease and corner nodes are the chains' instead, kept on
+// the input's creases and corners. Without a surface the boundary nodes stay. The energies and gradients are summed over the hexes in parallel (TBB) into
 // per-hex slots added in hex order, so the result is the same for any thread count.
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/progress.hpp"
+#include "volmesh/hexdc/feature_layer.hpp"
+#include "volmesh/hexdc/features.hpp"
 #include "volmesh/hexdc/surface_projector.hpp"
 
 namespace volmesh {
@@ -49,6 +52,14 @@ struct OptimiseOptions {
   // are crease or corner nodes (as the other stages').
   double feature_angle_deg = 40.0;
   Progress progress;
+  // The input's sharp features and the buffer layer's chains and corner nodes on them, or null:
+  // with both, each chain node slides along its crease only (its tangent at the node's closest
+  // point) and goes back onto the crease's closest point, each corner node stays on its corner,
+  // and neither is ever released. A chain or corner node the projection left off its feature
+  // slides on the surface until the step back onto the feature passes the guard. The other
+  // boundary nodes are smooth: the creases their normals would find fight the chains.
+  const SurfaceFeatures* features = nullptr;
+  const FeatureLayer* feature_layer = nullptr;
 };
 
 struct OptimiseStats {
@@ -65,6 +76,8 @@ struct OptimiseStats {
   Index features_released = 0;  // crease and corner nodes of hexes the first untangling left folded
   Index held_off_surface = 0;  // boundary nodes whose last step back onto the surface would fold a tet
   double seconds = 0.0;
+  Index pinned_nodes = 0;  // chain and corner nodes kept on their features (of those above)
+  Index pinned_off_features = 0;  // of those, left off their crease or corner at the end
 };
 
 // Moves mesh.points in place; connectivity and boundary faces are unchanged. An empty mesh is
