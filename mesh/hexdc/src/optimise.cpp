@@ -411,6 +411,8 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
     std::vector<char> unused(mesh.points.size(), 0);
     return e.least > kPositive && mark_folded(p, unused) == 0;
   };
+  // Every node a round has moved.
+  std::vector<char> moved(mesh.points.size(), 0);
   for (int attempt = 0; attempt < kUntangleAttempts && !untangled(at); ++attempt) {
     if (attempt > 0) stats.features_released += release_folded_features(p);
     UntangleProgress progress;
@@ -422,6 +424,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
       std::vector<char> near_folds(mesh.points.size(), 0);
       const Index folded = mark_folded(p, near_folds);
       const Active active = grow_active(p, std::move(near_folds), kUntangleRings);
+      for (const Index v : active.nodes) moved[static_cast<std::size_t>(v)] = 1;
       at = barrier_energy(p, active, barrier);
       const double before = at.energy;
       stats.untangle_iterations +=
@@ -447,6 +450,24 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
     // far side's closest point and fold again what the round untangled (snap's test compares
     // the scaled measures around a node, which in a folded neighbourhood accept a move that
     // leaves them no worse however far it goes). Untangled, they go back as far as no tet folds.
+    if (untangled(at)) {
+      // Each region ends at the first round that opens its last fold, often barely positive and
+      // far from the barrier's minimum: one more round over every node the rounds moved, no tet
+      // allowed to fold, gives the optimisation a smoother start.
+      const Active region = grow_active(p, moved, 0);
+      const auto positive = [](const Evaluation& e) { return e.least > kPositive; };
+      const std::vector<Vec3> kept = mesh.points;
+      at = barrier_energy(p, region, barrier);
+      stats.untangle_iterations +=
+          descend(p, region, options.untangle_iterations, StepLimit::shared,
+                  [&] { return barrier_energy(p, region, barrier); }, positive, no_tick, no_stop, at);
+      at = barrier_energy(p, all, barrier);
+      // (A tet measure, not a det J, may have fallen to the floor: then back.)
+      if (!untangled(at)) {
+        mesh.points = kept;
+        at = barrier_energy(p, all, barrier);
+      }
+    }
     if (untangled(at)) {
       const std::vector<Vec3> kept = mesh.points;
       snap(p, kPositive);

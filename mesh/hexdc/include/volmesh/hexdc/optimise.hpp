@@ -6,15 +6,16 @@
 //  1. Untangling, when a tet is not positive: L-BFGS on the barrier energy of Garanzha et al.
 //     ("Foldover-free maps in 50 lines of code", 2021) over the tets, each against its shape in
 //     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
-//     rises (their rule, and never above 0.2 of it), until a round leaves every tet positive. Each round moves the nodes
-//     within three hex rings of the hexes folded at its start, each node's step shortened on
-//     its own to 0.3 of its shortest edge; the rest of the mesh stays. Boundary nodes slide in
-//     their tangent planes and go back onto the surface once every tet is positive. A mesh
-//     already untangled skips it: the barrier trades the worst measures for less total
-//     distortion, and the optimisation raises the worst. If tets are still folded (or four
-//     rounds in a row neither lowered their count nor raised the least determinant), the
-//     crease and corner nodes of their hexes are released (they slide on the surface as the
-//     others do) and the untangling runs once more, ending alike.
+//     rises (their rule, and never above 0.2 of it), until a round leaves every tet positive.
+//     Each round moves the nodes within three hex rings of the hexes folded at its start (the
+//     rest of the mesh stays), each node's step past the first shortened on its own to 0.3 of
+//     its shortest edge. Boundary nodes slide in their tangent planes; once every tet is
+//     positive, one more round over every node the rounds moved, no tet allowed to fold, and
+//     they go back onto the surface. A mesh already untangled skips it: the barrier trades the
+//     worst measures for less total distortion, and the optimisation raises the worst. If tets
+//     are still folded (or four rounds in a row neither lowered their count nor raised the
+//     least determinant), the crease and corner nodes of their hexes are released (they slide
+//     on the surface as the others do) and the untangling runs once more, ending alike.
 //  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of every term of Verdict's scaled
 //     Jacobian (the eight corners and the centre's principal axes), the two inner tets (scaled
 //     to 1 in a cube) and the sines of the boundary quads' angles (below 180°), raising the
