@@ -138,25 +138,13 @@ Evaluation barrier_energy(const Problem& p, const Active& a, const Barrier& barr
     }
   });
   Evaluation e;
-  e.energy = std::accumulate(value.begin(), value.end(), a.frozen.energy);
-  e.least = std::accumulate(least.begin(), least.end(), a.frozen.least,
+  e.energy = std::accumulate(value.begin(), value.end(), 0.0);
+  e.least = std::accumulate(least.begin(), least.end(), std::numeric_limits<double>::infinity(),
                             [](double x, double y) { return std::min(x, y); });
   e.gradient = VectorXd::Zero(static_cast<Eigen::Index>(3 * a.nodes.size()));
   for (std::size_t i = 0; i < hexes; ++i)
     add_gradient(a, mesh.cells[static_cast<std::size_t>(a.hexes[i])], gradient[i], 1.0, e.gradient);
   return e;
-}
-
-void freeze_barrier(const Problem& p, const Barrier& barrier, Active& a) {
-  std::vector<char> active(p.mesh.cells.size(), 0);
-  for (const Index h : a.hexes) active[static_cast<std::size_t>(h)] = 1;
-  Active rest;
-  for (std::size_t h = 0; h < active.size(); ++h)
-    if (active[h] == 0) rest.hexes.push_back(static_cast<Index>(h));
-  rest.place.assign(p.mesh.points.size(), -1);
-  const Evaluation e = barrier_energy(p, rest, barrier);
-  a.frozen.energy = e.energy;
-  a.frozen.least = e.least;
 }
 
 Evaluation softmin_energy(const Problem& p, const Active& a, double beta) {

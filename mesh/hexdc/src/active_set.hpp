@@ -38,14 +38,14 @@ struct Problem {
 };
 
 // The nodes a descent moves and the hexes and quads it evaluates (those with a moving node);
-// every other term stays as it is, summed once into `frozen`.
+// every other term stays as it is: the optimisation sums them once into `frozen`, the untangling
+// leaves them out.
 struct Active {
   std::vector<Index> nodes;         // moving, in node order
   std::vector<Index> hexes, quads;  // in order
   std::vector<Eigen::Index> place;  // per node its coordinates' offset in x, or -1
   struct Frozen {
-    double energy = 0.0;  // untangling: the barrier energy of the other hexes
-    double least = std::numeric_limits<double>::infinity();  // their least term (det J)
+    double least = std::numeric_limits<double>::infinity();  // their least term
     double sum = 0.0;  // optimisation: Σ exp(−β (q − least)) over their terms
     double tet = std::numeric_limits<double>::infinity();    // their least tet measure
     double other = std::numeric_limits<double>::infinity();  // least centre measure or quad sine
@@ -68,7 +68,7 @@ inline std::array<Vec3, 4> quad_corners(const HexMesh& mesh, std::size_t q) {
 }
 
 // The energy at mesh.points with its gradient over the active nodes, and the least measures
-// there (the frozen terms' included).
+// there (the optimisation's frozen terms included).
 struct Evaluation {
   double energy = 0.0;
   double least = 0.0;  // the least det J (untangling) or tet measure (optimisation)
@@ -82,11 +82,8 @@ struct Evaluation {
 };
 
 // The barrier energy of the active hexes, computed in parallel into per-hex slots summed in
-// hex order, plus the frozen ones'.
+// hex order; the others are left out.
 Evaluation barrier_energy(const Problem& p, const Active& a, const Barrier& barrier);
-
-// The barrier energy and least det J of the hexes `a` leaves out, at the current points.
-void freeze_barrier(const Problem& p, const Barrier& barrier, Active& a);
 
 // −(1/β) log Σ exp(−β q) over every hex's ten tet measures and centre measure and every boundary
 // quad's corner sines, negated: minimising it raises the soft minimum. `least` is the least tet

@@ -59,11 +59,12 @@ constexpr double kShortestSnapped = 0.05;
 // The optimisation lets no hex edge fall below this fraction of its hex's mean edge at the start
 // (or below its start, if shorter).
 constexpr double kShortestEdge = 1e-3;
-// The untangling moves the nodes within this many hex rings of the hexes found folded so far;
-// the rest of the mesh stays as it is.
+// An untangling round moves the nodes within this many hex rings of the hexes folded at its
+// start; the rest of the mesh stays as it is.
 constexpr int kUntangleRings = 3;
-// An untangling attempt that leaves the count of folded hexes above its least for this many
-// rounds ends, and the next releases their features.
+// An untangling attempt whose rounds neither lower the count of folded hexes nor raise the least
+// determinant this many times in a row ends: the next releases their features, the last is
+// refused.
 constexpr int kStuckRounds = 4;
 // An optimisation pass ends, and a new one is chosen, when the least term has risen by this share
 // of the span that chose its nodes (kActiveSpan / β).
@@ -297,13 +298,31 @@ double step_cap(const Problem& p, const Active& a, const VectorXd& d) {
   return cap;
 }
 
+// Each node's part of d shortened to kMaxMove of its reach.
+void clamp_moves(const Problem& p, const Active& a, VectorXd& d) {
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    auto part = d.segment<3>(static_cast<Eigen::Index>(3 * i));
+    const double most = kMaxMove * p.reach[static_cast<std::size_t>(a.nodes[i])];
+    const double move = part.norm();
+    if (move > most) part *= most / move;
+  }
+}
+
+// How a descent keeps each node's move within kMaxMove of its reach: by one step length for
+// them all (step_cap), which keeps L-BFGS's direction; or by shortening each node's part of the
+// direction alone (clamp_moves), so that the few nodes beside a collapsed edge or a deep fold do
+// not hold every other node of a large region to their steps.
+enum class StepLimit : std::uint8_t { shared, per_node };
+
 // L-BFGS on `evaluate` (an Evaluation of mesh.points) over the active nodes from mesh.points,
 // for at most `iterations` iterations or until `stop` (given the accepted point and the
 // iterations done) says so; a point is accepted only when `feasible` says so. Returns the
 // iterations taken and leaves mesh.points at the last accepted point.
 template <class Evaluate, class Feasible, class Tick, class Stop>
-int descend(const Problem& p, const Active& a, int iterations, const Evaluate& evaluate,
-            const Feasible& feasible, const Tick& tick, const Stop& stop, Evaluation& at) {
+int descend(const Problem& p, const Active& a, int iterations, StepLimit limit,
+            const Evaluate& evaluate, const Feasible& feasible, const Tick& tick, const Stop& stop,
+            Evaluation& at) {
+  const bool per_node = limit == StepLimit::per_node;
   std::vector<Vec3>& points = p.mesh.points;
   Lbfgs lbfgs(kLbfgsMemory);
   VectorXd x = flatten(a, points);
@@ -318,9 +337,14 @@ int descend(const Problem& p, const Active& a, int iterations, const Evaluate& e
       lbfgs.reset();
       d = -g;
     }
+    // A steepest-descent step, without curvature to scale it, is capped for every node alike.
+    const bool clamped = per_node && !lbfgs.empty();
+    if (clamped) clamp_moves(p, a, d);
     if (!(g.dot(d) < 0.0)) break;  // no descent left in the allowed moves
-    double alpha = std::min(lbfgs.empty() ? std::numeric_limits<double>::infinity() : 1.0,
-                            step_cap(p, a, d));
+    // Clamped, the direction is already a step no node takes too far.
+    double alpha = clamped ? 1.0
+                           : std::min(lbfgs.empty() ? std::numeric_limits<double>::infinity() : 1.0,
+                                      step_cap(p, a, d));
     bool accepted = false;
     Evaluation trial;
     for (int k = 0; k <= kHalvings && !accepted; ++k, alpha *= 0.5) {
@@ -368,6 +392,26 @@ Index mark_folded(const Problem& p, std::vector<char>& marked) {
   return folded;
 }
 
+// Whether untangling rounds still get anywhere: a round counts as stuck unless it starts with
+// fewer folded hexes, or ends with a least determinant greater by kPositive, than every round
+// before.
+class UntangleProgress {
+ public:
+  // The rounds stuck in a row, this one included.
+  int stuck(Index folded, double least) {
+    const bool better = folded < fewest_ || least > best_ + kPositive;
+    fewest_ = std::min(fewest_, folded);
+    best_ = std::max(best_, least);
+    stuck_ = better ? 0 : stuck_ + 1;
+    return stuck_;
+  }
+
+ private:
+  Index fewest_ = std::numeric_limits<Index>::max();
+  double best_ = -std::numeric_limits<double>::infinity();
+  int stuck_ = 0;
+};
+
 Index count_negative(const HexMesh& mesh) {
   Index n = 0;
   for (Index h = 0; h < mesh.num_cells(); ++h)
@@ -399,8 +443,8 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
 
   const Active all = everything(p);
 
-  // 1. Untangling: Garanzha et al.'s rounds, ε following the least determinant, over the nodes
-  // near the hexes found folded so far.
+  // 1. Untangling: Garanzha et al.'s rounds, ε following the least determinant, each over the
+  // nodes near the hexes folded at its start.
   Barrier barrier{.epsilon = 0.0, .theta = options.theta};
   Evaluation at = barrier_energy(p, all, barrier);
   barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
@@ -409,41 +453,84 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   const auto any_point = [](const Evaluation&) { return true; };
   const auto no_tick = [](int) {};
   const auto no_stop = [](const Evaluation&, int) { return false; };
-  std::vector<char> near_folds(mesh.points.size(), 0);
   // A mesh whose tets are all positive goes straight to the optimisation, which raises its worst
   // measures: the barrier's rounds would trade them for a lower total distortion. A mesh left
   // folded has the feature nodes of its folded hexes released onto the surface, and is
   // untangled again.
-  for (int attempt = 0; attempt < kUntangleAttempts && at.least <= kPositive; ++attempt) {
+  // Untangled: every det J and every tet measure above kPositive (the optimisation's start).
+  const auto untangled = [&](const Evaluation& e) {
+    std::vector<char> unused(mesh.points.size(), 0);
+    return e.least > kPositive && mark_folded(p, unused) == 0;
+  };
+  // Every node a round has moved.
+  std::vector<char> moved(mesh.points.size(), 0);
+  for (int attempt = 0; attempt < kUntangleAttempts && !untangled(at); ++attempt) {
     if (attempt > 0) stats.features_released += release_folded_features(p, pins);
-    int stuck_rounds = 0;
-    Index fewest_folded = std::numeric_limits<Index>::max();
+    UntangleProgress progress;
     for (int round = 0; round < options.untangle_rounds; ++round) {
       report(options.progress, "untangling",
              kUntangleShare * round / std::max(options.untangle_rounds, 1));
+      // Only the hexes folded now and their rings move: the rest, every tet positive, stays, so
+      // a round costs what its folds cover, not the whole mesh.
+      std::vector<char> near_folds(mesh.points.size(), 0);
       const Index folded = mark_folded(p, near_folds);
-      Active active = grow_active(p, near_folds, kUntangleRings);
-      freeze_barrier(p, barrier, active);
+      const Active active = grow_active(p, std::move(near_folds), kUntangleRings);
+      for (const Index v : active.nodes) moved[static_cast<std::size_t>(v)] = 1;
       at = barrier_energy(p, active, barrier);
       const double before = at.energy;
       stats.untangle_iterations +=
-          descend(p, active, options.untangle_iterations,
+          descend(p, active, options.untangle_iterations, StepLimit::per_node,
                   [&] { return barrier_energy(p, active, barrier); }, any_point, no_tick, no_stop, at);
-      snap(p, pins, kPositive);
-      at = barrier_energy(p, all, barrier);
       ++stats.untangle_rounds;
       const double sigma = std::max(1.0 - at.energy / before, kMinSigma);
       const double d = at.least, root = std::hypot(d, barrier.epsilon);
       barrier.epsilon *= d >= 0.0 ? 1.0 - sigma : 1.0 - sigma * root / (std::abs(d) + root);
+      // ε is never above what a fresh start would take (kEpsilonOfDet |d|): far above the least
+      // determinant, the barrier no longer sees the last folds, which then open by a few per cent
+      // a round.
+      if (d < 0.0) barrier.epsilon = std::min(barrier.epsilon, kEpsilonOfDet * -d);
       barrier.epsilon = std::max(barrier.epsilon, kMinEpsilon);
-      at = barrier_energy(p, all, barrier);
-      if (d > kPositive) break;
-      // Folds that rounds on end do not reduce wait for their features' release.
-      stuck_rounds = folded < fewest_folded ? 0 : stuck_rounds + 1;
-      fewest_folded = std::min(fewest_folded, folded);
-      if (attempt + 1 < kUntangleAttempts && stuck_rounds == kStuckRounds) break;
+      if (untangled(at)) break;
+      // Folds that rounds on end neither reduce nor open up end the attempt: the first's wait
+      // for their features' release, the last's are refused.
+      if (progress.stuck(folded, d) == kStuckRounds) break;
     }
-    if (at.least <= kPositive) {
+    at = barrier_energy(p, all, barrier);
+    // The sliding nodes step in their tangent planes and stay off the surface until every tet is
+    // positive: taken back after each round, a node moved across a thin part would go to the
+    // far side's closest point and fold again what the round untangled (snap's test compares
+    // the scaled measures around a node, which in a folded neighbourhood accept a move that
+    // leaves them no worse however far it goes). Untangled, they go back as far as no tet folds.
+    if (untangled(at)) {
+      // Each region ends at the first round that opens its last fold, often barely positive and
+      // far from the barrier's minimum: one more round over every node the rounds moved, no tet
+      // allowed to fold, gives the optimisation a smoother start.
+      const Active region = grow_active(p, moved, 0);
+      const auto positive = [](const Evaluation& e) { return e.least > kPositive; };
+      const std::vector<Vec3> kept = mesh.points;
+      at = barrier_energy(p, region, barrier);
+      stats.untangle_iterations +=
+          descend(p, region, options.untangle_iterations, StepLimit::shared,
+                  [&] { return barrier_energy(p, region, barrier); }, positive, no_tick, no_stop, at);
+      at = barrier_energy(p, all, barrier);
+      // (A tet measure, not a det J, may have fallen to the floor: then back.)
+      if (!untangled(at)) {
+        mesh.points = kept;
+        at = barrier_energy(p, all, barrier);
+      }
+    }
+    if (untangled(at)) {
+      const std::vector<Vec3> kept = mesh.points;
+      snap(p, pins, kPositive);
+      at = barrier_energy(p, all, barrier);
+      // Where a boundary quad corner around a node is already reflex, snap's floor lets a tet
+      // there fold: then the nodes stay where the untangling left them.
+      if (!untangled(at)) {
+        mesh.points = kept;
+        at = barrier_energy(p, all, barrier);
+      }
+    }
+    if (!untangled(at)) {
       // The last round's ε may hide a fold the barrier has not yet seen: restart from a fresh ε.
       barrier.epsilon = std::max(kMinEpsilon, kEpsilonOfDet * std::max(-at.least, 0.0));
       at = barrier_energy(p, all, barrier);
@@ -487,8 +574,9 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
         return risen || (done >= kStallWindow &&
                          energies[static_cast<std::size_t>(done - kStallWindow)] - e.energy < kStallDrop);
       };
-      const int done = descend(p, active, left, [&] { return softmin_energy(p, active, beta); },
-                               feasible, tick, stop, at);
+      const int done = descend(p, active, left, StepLimit::shared,
+                               [&] { return softmin_energy(p, active, beta); }, feasible, tick,
+                               stop, at);
       stats.quality_iterations += done;
       left -= done;
       if (!risen) break;

@@ -6,12 +6,16 @@
 //  1. Untangling, when a tet is not positive: L-BFGS on the barrier energy of Garanzha et al.
 //     ("Foldover-free maps in 50 lines of code", 2021) over the tets, each against its shape in
 //     a cube of its hex's mean edge, with the regulariser ε lowered as the least determinant
-//     rises (their rule), until a round leaves every tet positive. Each round moves the nodes
-//     within three hex rings of the hexes found folded so far; the rest of the mesh stays. A
-//     mesh already untangled skips it: the barrier trades the worst measures for less total
-//     distortion, and the optimisation raises the worst. If tets are still folded (or their
-//     count has not fallen for four rounds), the crease and corner nodes of their hexes are
-//     released (they slide on the surface as the others do) and the untangling runs once more.
+//     rises (their rule, and never above 0.2 of it), until a round leaves every tet positive.
+//     Each round moves the nodes within three hex rings of the hexes folded at its start (the
+//     rest of the mesh stays), each node's step past the first shortened on its own to 0.3 of
+//     its shortest edge. Boundary nodes slide in their tangent planes; once every tet is
+//     positive, one more round over every node the rounds moved, no tet allowed to fold, and
+//     they go back onto the surface. A mesh already untangled skips it: the barrier trades the
+//     worst measures for less total distortion, and the optimisation raises the worst. If tets
+//     are still folded (or four rounds in a row neither lowered their count nor raised the
+//     least determinant), the crease and corner nodes of their hexes are released (they slide
+//     on the surface as the others do) and the untangling runs once more, ending alike.
 //  2. Optimisation: L-BFGS on a soft minimum (log-sum-exp) of every term of Verdict's scaled
 //     Jacobian (the eight corners and the centre's principal axes), the two inner tets (scaled
 //     to 1 in a cube) and the sines of the boundary quads' angles (below 180°), raising the
@@ -25,13 +29,14 @@
 //     below 1e-3 of its hex's mean edge (the scaled measures, ratios of lengths, let two nodes
 //     meet).
 // Boundary nodes slide on the surface: they step in their tangent planes (crease nodes along
-// their crease, corner nodes not at all) and, after each round, go back onto the surface's
-// closest point unless that would fold a tet or lower the worst measure (held_off_surface
-// counts those). A node is a crease or corner node when the surface's normals just beside it
-// (surface_normals_at, probed at a twentieth of its shortest edge) spread beyond the feature
-// angle: a smooth part stays smooth however coarse the mesh. Given the buffer layer's chains
-// (OptimiseOptions::feature_layer), the crease and corner nodes are the chains' instead, kept on
-// the input's creases and corners. Without a surface the boundary nodes stay. The energies and gradients are summed over the hexes in parallel (TBB) into
+// their crease, corner nodes not at all) and, after the untangling and each optimisation round,
+// go back onto the surface's closest point unless that would fold a tet or lower the worst
+// measure (held_off_surface counts those). A node is a crease or corner node when the
+// surface's normals just beside it (surface_normals_at, probed at a twentieth of its shortest
+// edge) spread beyond the feature angle: a smooth part stays smooth however coarse the mesh.
+// Given the buffer layer's chains (OptimiseOptions::feature_layer), the crease and corner nodes
+// are the chains' instead, kept on the input's creases and corners. Without a surface the
+// boundary nodes stay. The energies and gradients are summed over the hexes in parallel (TBB) into
 // per-hex slots added in hex order, so the result is the same for any thread count.
 #include "volmesh/core/element_mesh.hpp"
 #include "volmesh/core/progress.hpp"
