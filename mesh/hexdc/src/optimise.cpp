@@ -206,15 +206,21 @@ void restrict_moves(const Problem& p, const Active& a, VectorXd& d) {
   }
 }
 
+// The least corner tet measure of node v's hexes.
+double least_tet_around(const Problem& p, std::size_t v) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Index h : p.hexes[v]) {
+    const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
+    least = std::min(least, *std::min_element(q.begin(), q.end()));
+  }
+  return least;
+}
+
 // The least of the optimised measures around node v: its hexes' tet and centre measures and its
 // boundary quads' corner sines.
 double least_around(const Problem& p, std::size_t v) {
-  double least = std::numeric_limits<double>::infinity();
-  for (const Index h : p.hexes[v]) {
-    const auto corners = hex_corners(p.mesh, h);
-    const auto q = hex_tet_qualities(corners);
-    least = std::min({least, *std::min_element(q.begin(), q.end()), hex_centre_quality(corners)});
-  }
+  double least = least_tet_around(p, v);
+  for (const Index h : p.hexes[v]) least = std::min(least, hex_centre_quality(hex_corners(p.mesh, h)));
   for (const Index q : p.quads[v]) {
     const auto sines = quad_sines(quad_corners(p.mesh, static_cast<std::size_t>(q)));
     least = std::min(least, *std::min_element(sines.begin(), sines.end()));
@@ -245,10 +251,12 @@ Index snap(Problem& p, const FeaturePins& pins, double floor) {
   });
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (!slides(v) || targets[v] == points[v]) continue;
-    const double before = least_around(p, v);
+    const double before = least_around(p, v), tets_before = least_tet_around(p, v);
     const Vec3 kept = points[v];
     points[v] = targets[v];
+    // A reflex quad corner puts `floor` below zero; a tet may still not fold.
     if (least_around(p, v) < std::min(before, floor) ||
+        least_tet_around(p, v) < std::min(tets_before, kPositive) ||
         shortest_edge(p.mesh, p.hexes[v], v) < kShortestSnapped * p.reach[v]) {
       points[v] = kept;
       ++held;
