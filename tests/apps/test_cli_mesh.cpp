@@ -262,6 +262,21 @@ TEST(CliMesh, HexdcRefinesThinPartsWhereTheMeshIsPoor) {
   EXPECT_TRUE(check_validity(read_mesh(out)).valid());
 }
 
+// 3torus at level 5 has boundary quad corners beyond 180 deg, so the optimisation's floor for
+// the return to the surface is below zero: the corner tets are guarded on their own, or the
+// return folds one and the mesh is refused.
+TEST(CliMesh, HexdcSurfaceReturnFoldsNoTetBesideAReflexQuad) {
+  const fs::path dir = test::scratch_dir("mesh-hexdc-reflex");
+  const fs::path out = dir / "3torus.vtu";
+  const auto r = run_volmesh("mesh hexdc " VOLMESH_CGAL_DATA "/meshes/3torus.off --level 5 "
+                             "--thin-parts off --json -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["optimisation"]["negative_tets_after"], 0);
+  EXPECT_GT(j["optimisation"]["min_tet_quality_after"].get<double>(), 0.0);
+  EXPECT_TRUE(check_validity(read_mesh(out)).valid());
+}
+
 // With one voxel per node (--dim = --level) the thin parts' widths cannot be read: a field the
 // mesher samples itself gets one level finer, and --json says so.
 TEST(CliMesh, HexdcRaisesTheFieldForTheThinParts) {
