@@ -531,8 +531,8 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
       const std::vector<Vec3> kept = mesh.points;
       snap(p, pins, kPositive);
       at = barrier_energy(p, all, barrier);
-      // Where a boundary quad corner around a node is already reflex, snap's floor lets a tet
-      // there fold: then the nodes stay where the untangling left them.
+      // snap guards each node's scaled tet measures, not the barrier's determinants (unscaled):
+      // a return that leaves one at or below kPositive is undone.
       if (!untangled(at)) {
         mesh.points = kept;
         at = barrier_energy(p, all, barrier);
