@@ -274,6 +274,12 @@ Index pinned_off_features(const Problem& p, const FeaturePins& pins) {
   return off;
 }
 
+// Whether hex h has a tet measure not above kPositive (a NaN one included).
+bool folded(const HexMesh& mesh, Index h) {
+  const auto q = hex_tet_qualities(hex_corners(mesh, h));
+  return !(*std::min_element(q.begin(), q.end()) > kPositive);
+}
+
 // Makes the crease and corner nodes of every hex with a folded tet slide on the surface as the
 // smooth ones do: a fold whose corners are all held on features may have no way out otherwise.
 // Pinned nodes stay on their features: a fold they hold is refused. Returns how many were
@@ -281,8 +287,7 @@ Index pinned_off_features(const Problem& p, const FeaturePins& pins) {
 Index release_folded_features(Problem& p, const FeaturePins& pins) {
   Index released = 0;
   for (Index h = 0; h < p.mesh.num_cells(); ++h) {
-    const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
-    if (*std::min_element(q.begin(), q.end()) > kPositive) continue;
+    if (!folded(p.mesh, h)) continue;
     for (const Index v : p.mesh.cells[static_cast<std::size_t>(h)]) {
       NodeKind& kind = p.kind[static_cast<std::size_t>(v)];
       if (p.quads[static_cast<std::size_t>(v)].empty() || !p.surface ||
@@ -388,16 +393,21 @@ double least_scaled_jacobian(const HexMesh& mesh) {
   return least;
 }
 
-// Marks the corners of every hex with a tet measure not above kPositive; returns how many hexes.
+// Marks the corners of every folded hex; returns how many hexes.
 Index mark_folded(const Problem& p, std::vector<char>& marked) {
-  Index folded = 0;
+  Index count = 0;
   for (Index h = 0; h < p.mesh.num_cells(); ++h) {
-    const auto q = hex_tet_qualities(hex_corners(p.mesh, h));
-    if (*std::min_element(q.begin(), q.end()) > kPositive) continue;
-    ++folded;
+    if (!folded(p.mesh, h)) continue;
+    ++count;
     for (const Index v : p.mesh.cells[static_cast<std::size_t>(h)]) marked[static_cast<std::size_t>(v)] = 1;
   }
-  return folded;
+  return count;
+}
+
+bool any_folded(const HexMesh& mesh) {
+  for (Index h = 0; h < mesh.num_cells(); ++h)
+    if (folded(mesh, h)) return true;
+  return false;
 }
 
 // Whether untangling rounds still get anywhere: a round counts as stuck unless it starts with
@@ -466,10 +476,7 @@ OptimiseStats optimise_hexes(HexMesh& mesh, const SurfaceProjector& surface,
   // folded has the feature nodes of its folded hexes released onto the surface, and is
   // untangled again.
   // Untangled: every det J and every tet measure above kPositive (the optimisation's start).
-  const auto untangled = [&](const Evaluation& e) {
-    std::vector<char> unused(mesh.points.size(), 0);
-    return e.least > kPositive && mark_folded(p, unused) == 0;
-  };
+  const auto untangled = [&](const Evaluation& e) { return e.least > kPositive && !any_folded(mesh); };
   // Every node a round has moved.
   std::vector<char> moved(mesh.points.size(), 0);
   for (int attempt = 0; attempt < kUntangleAttempts && !untangled(at); ++attempt) {

@@ -15,38 +15,40 @@ inline Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return a + t * ab;
 }
 
-// The point of `line` (at least one point) nearest p.
-inline Vec3 closest_on_polyline(const Vec3& p, const std::vector<Vec3>& line) {
-  Vec3 best = line.front();
-  double least = (p - best).squaredNorm();
-  for (std::size_t i = 1; i < line.size(); ++i) {
+// The segment of `line` (at least two points) nearest p, as the index of its end (1 for the
+// first), and its point nearest p; the first of equally near segments.
+struct NearestSegment {
+  std::size_t end = 1;
+  Vec3 point;
+};
+
+inline NearestSegment nearest_segment(const Vec3& p, const std::vector<Vec3>& line) {
+  NearestSegment best{1, closest_on_segment(p, line[0], line[1])};
+  double least = (p - best.point).squaredNorm();
+  for (std::size_t i = 2; i < line.size(); ++i) {
     const Vec3 q = closest_on_segment(p, line[i - 1], line[i]);
     const double d = (p - q).squaredNorm();
     if (d < least) {
       least = d;
-      best = q;
+      best = {i, q};
     }
   }
   return best;
+}
+
+// The point of `line` (at least one point) nearest p.
+inline Vec3 closest_on_polyline(const Vec3& p, const std::vector<Vec3>& line) {
+  return line.size() == 1 ? line.front() : nearest_segment(p, line).point;
 }
 
 // The unit direction of `line` (at least two points) at its point nearest p: its segment's there
 // or, where that point is a vertex joining two segments (a closed line's ends join), the mean of
 // theirs.
 inline Vec3 polyline_tangent(const Vec3& p, const std::vector<Vec3>& line) {
-  std::size_t nearest = 1;
-  double least = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const double d = (p - closest_on_segment(p, line[i - 1], line[i])).squaredNorm();
-    if (d < least) {
-      least = d;
-      nearest = i;
-    }
-  }
+  const auto [nearest, at] = nearest_segment(p, line);
   const auto direction = [&](std::size_t i) { return (line[i] - line[i - 1]).normalized(); };
   const std::size_t last = line.size() - 1;
   const bool closed = last > 1 && line.front() == line.back();
-  const Vec3 at = closest_on_segment(p, line[nearest - 1], line[nearest]);
   Vec3 tangent = direction(nearest);
   if (at == line[nearest] && (nearest < last || closed))
     tangent += direction(nearest < last ? nearest + 1 : 1);
